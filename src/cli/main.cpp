@@ -1,0 +1,56 @@
+// colza command line. Exit codes: 0 success, 1 internal failure, 2 bad input.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "cli/run_commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"colza: discrete element simulation of oilseed bulks (oedometer, shear box)"};
+  app.set_version_flag("--version", std::string("colza 0.1.0 (") + COLZA_GIT_REVISION + ")");
+  app.require_subcommand(1);
+
+  colza::RunOptions opt;
+  CLI::App* run = app.add_subcommand("run", "run a scenario and write its results to --out");
+  run->add_option("scenario", opt.scenario, "oedometer | scene")
+      ->required()
+      ->check(CLI::IsMember({"oedometer", "scene"}));
+  run->add_option("--config", opt.config_path, "TOML config (default: built-in = data/oedometer.toml)");
+  run->add_option("--set", opt.overrides, "override a config key: --set particle.friction=0.3 (repeatable)")
+      ->take_last()
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  run->add_option("--seed", opt.seed, "random seed for sample generation (overrides the config's seed)")
+      ->check(CLI::NonNegativeNumber);
+  run->add_option("--threads", opt.threads, "worker threads")->check(CLI::PositiveNumber);
+  run->add_option("--out", opt.out_dir, "output directory")->required();
+  run->add_flag("--force", opt.force, "replace an earlier result in --out (only once the new run has succeeded)");
+  run->add_flag("--quiet", opt.quiet, "no progress display");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  }
+#ifdef _OPENMP
+  omp_set_num_threads(opt.threads);
+#endif
+  try {
+    if (run->parsed()) return colza::run_command(opt);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "colza: internal error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,171 @@
+#include "cli/run_commands.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include "config/run_config.hpp"
+#include "contact/slot_registry.hpp"
+#include "io/hdf5_writer.hpp"
+#include "io/output_dir.hpp"
+#include "io/packing_file.hpp"
+#include "io/summary.hpp"
+#include "scenario/oedometer.hpp"
+#include "scenario/scene.hpp"
+
+namespace colza {
+
+namespace {
+
+nlohmann::json common_summary(const RunConfig& c, const std::string& scenario, int threads) {
+  return {{"scenario", scenario},
+          {"colza_version", "0.1.0"},
+          {"git_revision", COLZA_GIT_REVISION},
+          {"config", c.source},
+          {"seed", c.seed},
+          {"threads", threads},
+          {"stiffness_rule", to_string(c.stiffness_rule)},
+          {"contact_model", describe(c.contact)},
+          {"damping", c.integration.damping},
+          {"damping_form", to_string(c.integration.damping_form)},
+          {"time_step_mode", c.integration.automatic_time_step ? "auto" : "fixed"}};
+}
+
+double total_wall_seconds(const std::vector<StageTiming>& stages) {
+  double t = 0.0;
+  for (const auto& s : stages) t += s.wall_seconds;
+  return t;
+}
+
+double overall_rate(const std::vector<StageTiming>& stages) {
+  double ps = 0.0;
+  for (const auto& s : stages) ps += s.particle_steps;
+  const double t = total_wall_seconds(stages);
+  return t > 0.0 ? ps / t : 0.0;
+}
+
+void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging& out) {
+  Progress progress(!opt.quiet);
+  const OedometerResult r = run_oedometer(c, progress);
+  nlohmann::json s = common_summary(c, "oedometer", opt.threads);
+  s["particles_generated"] = r.particles_generated;
+  s["particles"] = r.particles;
+  s["packing_height"] = r.packing_height;
+  s["bulk_density"] = r.bulk_density;
+  s["settling"] = {{"converged", r.settling.converged},
+                   {"steps", r.settling.steps},
+                   {"simulated_time", r.settling.simulated_time},
+                   {"mean_unbalanced_force", r.settling.mean_unbalanced_force},
+                   {"threshold", c.sample.settle_unbalanced_force}};
+  s["bond_install"] = to_string(c.contact.bond_install);
+  s["bonds_installed"] = r.bonds_installed;
+  s["bonds_broken_tension"] = r.bonds_broken_tension;
+  s["bonds_broken_shear"] = r.bonds_broken_shear;
+  nlohmann::json fit = {{"valid", r.fit.valid},
+                        {"force_min", c.oedometer.fit_force_min},
+                        {"force_max", c.oedometer.fit_force_max},
+                        {"reached_force_max", r.fit.reached_force_max},
+                        {"zero_displacement", r.fit.zero_displacement},
+                        {"points", r.fit.fit.points}};
+  if (r.fit.valid) {
+    fit["c0"] = r.fit.fit.coefficients[0];
+    fit["c1"] = r.fit.fit.coefficients[1];
+    fit["c2"] = r.fit.fit.coefficients[2];
+    fit["r2"] = r.fit.fit.r2;
+  }
+  s["fit"] = fit;
+  s["max_force"] = r.max_force;
+  s["stop_reason"] = r.stop_reason;
+  s["dt"] = r.dt_min;
+  s["dt_max"] = r.dt_max;
+  s["steps"] = r.steps;
+  s["wall_seconds"] = total_wall_seconds(r.stages);
+  s["particle_steps_per_second"] = overall_rate(r.stages);
+  s["stages"] = stages_json(r.stages);
+
+  write_csv(out.path("curve.csv"), r.curve);
+  write_packing(out.path("packing.txt"), r.settled);
+  {
+    Hdf5Writer h5(out.path("result.h5"));
+    write_provenance(h5, "oedometer", c.seed, c.resolved_toml);
+    h5.attribute("summary_json", s.dump());
+    h5.write_table("curve", r.curve);
+    h5.write_particles("particles/settled", r.settled);
+    h5.write_particles("particles/final", r.final_state);
+    h5.close();
+  }
+  write_json(out.path("summary.json"), s);
+
+  std::printf("oedometer: %zu particles (%zu generated), bulk density %.1f kg/m^3, settling %s after %.3f s\n",
+              r.particles, r.particles_generated, r.bulk_density, r.settling.converged ? "converged" : "DID NOT converge",
+              r.settling.simulated_time);
+  std::printf("  max piston force %.1f N (stop: %s); fit F = c0 + c1 s + c2 s^2 over %.0f..%.0f N:", r.max_force,
+              r.stop_reason.c_str(), c.oedometer.fit_force_min, c.oedometer.fit_force_max);
+  if (r.fit.valid)
+    std::printf(" c0 = %.4g N, c1 = %.4g N/m, c2 = %.4g N/m^2, R^2 = %.4f\n", r.fit.fit.coefficients[0],
+                r.fit.fit.coefficients[1], r.fit.fit.coefficients[2], r.fit.fit.r2);
+  else
+    std::printf(" not enough points above %.0f N\n", c.oedometer.fit_force_min);
+  if (!r.fit.reached_force_max)
+    std::printf("  WARNING: the force never reached fit_force_max = %.0f N; the fit covers a shorter range\n",
+                c.oedometer.fit_force_max);
+  std::printf("  %llu steps, dt %.3g..%.3g s, %.1f s wall, %.3g particle-steps/s\n",
+              static_cast<unsigned long long>(r.steps), r.dt_min, r.dt_max, total_wall_seconds(r.stages),
+              overall_rate(r.stages));
+}
+
+void run_scene_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging& out) {
+  Progress progress(!opt.quiet);
+  const SceneResult r = run_scene(c, progress);
+  nlohmann::json s = common_summary(c, "scene", opt.threads);
+  s["particles"] = r.final_state.size();
+  s["walls"] = c.scene.walls.size();
+  s["bonds_installed"] = r.bonds_installed;
+  s["dt"] = r.dt;
+  s["steps"] = r.steps;
+  s["wall_seconds"] = total_wall_seconds(r.stages);
+  s["particle_steps_per_second"] = overall_rate(r.stages);
+  s["stages"] = stages_json(r.stages);
+  write_csv(out.path("series.csv"), r.series);
+  {
+    Hdf5Writer h5(out.path("result.h5"));
+    write_provenance(h5, "scene", c.seed, c.resolved_toml);
+    h5.attribute("summary_json", s.dump());
+    h5.write_table("series", r.series);
+    h5.write_particles("particles/final", r.final_state);
+    h5.close();
+  }
+  write_packing(out.path("packing.txt"), r.final_state);
+  write_json(out.path("summary.json"), s);
+  std::printf("scene: %zu particles, %zu walls, %llu steps of %.4g s, %.2f s wall\n", r.final_state.size(),
+              c.scene.walls.size(), static_cast<unsigned long long>(r.steps), r.dt, total_wall_seconds(r.stages));
+}
+
+}  // namespace
+
+int run_command(const RunOptions& opt) {
+  const Scenario scenario = opt.scenario == "scene" ? Scenario::kScene : Scenario::kOedometer;
+  RunConfig config;
+  try {
+    std::vector<std::string> overrides = opt.overrides;
+    if (opt.seed >= 0) overrides.push_back("seed=" + std::to_string(opt.seed));
+    config = load_run_config(scenario, opt.config_path, overrides);
+    if (opt.out_dir.empty()) throw ConfigError("--out", "", "an output directory is required");
+    check_output_dir(opt.out_dir, opt.force);
+  } catch (const ConfigError& e) {
+    std::fprintf(stderr, "colza: error: %s\n", e.what());
+    return 2;
+  }
+  try {
+    OutputStaging out(opt.out_dir, opt.force);
+    if (scenario == Scenario::kOedometer) run_oedometer_scenario(config, opt, out);
+    else run_scene_scenario(config, opt, out);
+    out.commit();
+  } catch (const ConfigError& e) {
+    std::fprintf(stderr, "colza: error: %s\n", e.what());
+    return 2;
+  }
+  return 0;
+}
+
+}  // namespace colza

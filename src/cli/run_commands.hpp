@@ -1,0 +1,22 @@
+// `colza run <scenario>`: load and validate the config, run, write the results atomically.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace colza {
+
+struct RunOptions {
+  std::string scenario;               // "oedometer" | "scene"
+  std::string config_path;            // empty: built-in defaults (= data/oedometer.toml)
+  std::vector<std::string> overrides; // --set key=value
+  long long seed = -1;                // --seed, -1: from the config
+  int threads = 1;
+  std::string out_dir;
+  bool force = false;
+  bool quiet = false;
+};
+
+// Returns the process exit code: 0 success, 2 bad input (message already printed).
+int run_command(const RunOptions& options);
+
+}  // namespace colza

@@ -1,0 +1,268 @@
+#include "config/config_reader.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace colza {
+
+namespace {
+
+std::string describe(const toml::node& n) {
+  std::ostringstream s;
+  if (n.is_string()) s << '"' << *n.value<std::string>() << '"';
+  else if (n.is_table()) s << "a table";
+  else if (n.is_array()) s << "an array";
+  else if (auto d = n.value_exact<double>()) s << *d;
+  else if (auto i = n.value_exact<std::int64_t>()) s << *i;
+  else if (auto b = n.value_exact<bool>()) s << (*b ? "true" : "false");
+  else s << "a value of another type";
+  return s.str();
+}
+
+std::string format_number(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+}  // namespace
+
+// ---- ConfigReader -------------------------------------------------------------------
+
+ConfigReader ConfigReader::from_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError(path, "", "cannot open the config file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return from_string(buffer.str(), path);
+}
+
+ConfigReader ConfigReader::from_string(const std::string& text, const std::string& source_name) {
+  try {
+    return ConfigReader(toml::parse(text, source_name), source_name);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream s;
+    s << "line " << e.source().begin.line << ": TOML syntax error: " << e.description();
+    throw ConfigError(source_name, "", s.str());
+  }
+}
+
+ConfigReader ConfigReader::empty(const std::string& source_name) { return ConfigReader(toml::table{}, source_name); }
+
+void ConfigReader::apply_override(const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw ConfigError("--set", assignment, "expected key=value");
+  const std::string key = assignment.substr(0, eq);
+  const std::string value_text = assignment.substr(eq + 1);
+  toml::table parsed;
+  try {
+    parsed = toml::parse("v = " + value_text);
+  } catch (const toml::parse_error&) {
+    // Bare words such as `--set contact.bond=contact_bond` are strings.
+    parsed = toml::table{{"v", value_text}};
+  }
+  // Walk/create the dotted path.
+  toml::table* table = &document_;
+  std::size_t start = 0;
+  while (true) {
+    const auto dot = key.find('.', start);
+    const std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (part.empty()) throw ConfigError("--set", key, "empty key component");
+    if (dot == std::string::npos) {
+      table->insert_or_assign(part, *parsed.get("v"));
+      break;
+    }
+    auto* next = table->get(part);
+    if (!next) {
+      table->insert(part, toml::table{});
+      next = table->get(part);
+    }
+    if (!next->is_table()) throw ConfigError("--set", key, "'" + part + "' is not a table");
+    table = next->as_table();
+    start = dot + 1;
+  }
+  overridden_.insert(key);
+}
+
+std::string ConfigReader::origin_of(const std::string& full_key) const {
+  for (const auto& k : overridden_)
+    if (full_key == k || full_key.rfind(k + ".", 0) == 0) return "--set " + k;
+  return source_;
+}
+
+std::string ConfigReader::resolved_text() const {
+  std::ostringstream s;
+  s << document_;
+  return s.str();
+}
+
+namespace {
+void collect_unknown(const toml::table& t, const std::string& path, const std::set<std::string>& used,
+                     std::vector<std::string>& unknown) {
+  for (const auto& [k, node] : t) {
+    const std::string full = path.empty() ? std::string(k.str()) : path + "." + std::string(k.str());
+    if (used.count(full)) continue;
+    if (const auto* sub = node.as_table()) {
+      collect_unknown(*sub, full, used, unknown);
+    } else if (const auto* arr = node.as_array(); arr && arr->is_array_of_tables()) {
+      for (std::size_t i = 0; i < arr->size(); ++i)
+        collect_unknown(*arr->get(i)->as_table(), full + "[" + std::to_string(i) + "]", used, unknown);
+    } else {
+      unknown.push_back(full);
+    }
+  }
+}
+}  // namespace
+
+void ConfigReader::reject_unknown_keys() const {
+  std::vector<std::string> unknown;
+  collect_unknown(document_, "", used_, unknown);
+  if (!unknown.empty())
+    throw ConfigError(origin_of(unknown.front()), unknown.front(),
+                      "unknown key (misspelt, or not used by this scenario)");
+}
+
+// ---- ConfigNode ---------------------------------------------------------------------
+
+void ConfigNode::fail(const std::string& key, const std::string& reason) const {
+  const std::string k = full(key);
+  throw ConfigError(reader_->origin_of(k), k, reason);
+}
+
+const toml::node* ConfigNode::find(const std::string& key) const {
+  if (!table_) return nullptr;
+  const toml::node* n = table_->get(key);
+  if (n) reader_->used_.insert(full(key));
+  return n;
+}
+
+bool ConfigNode::has(const std::string& key) const { return table_ && table_->contains(key); }
+
+bool ConfigNode::is_string(const std::string& key) const {
+  return table_ && table_->get(key) && table_->get(key)->is_string();
+}
+
+void ConfigNode::accept(const std::string& key) const {
+  if (has(key)) reader_->used_.insert(full(key));
+}
+
+double ConfigNode::number(const std::string& key, double fallback) const {
+  const toml::node* n = find(key);
+  if (!n) return fallback;
+  if (auto v = n->value_exact<double>()) {
+    if (!std::isfinite(*v)) fail(key, "must be a finite number");
+    return *v;
+  }
+  if (auto v = n->value_exact<std::int64_t>()) return static_cast<double>(*v);
+  fail(key, "expected a number, got " + describe(*n));
+}
+
+double ConfigNode::positive(const std::string& key, double fallback) const {
+  const double v = number(key, fallback);
+  if (!(v > 0.0)) fail(key, "must be positive, got " + format_number(v));
+  return v;
+}
+
+double ConfigNode::non_negative(const std::string& key, double fallback) const {
+  const double v = number(key, fallback);
+  if (!(v >= 0.0)) fail(key, "must not be negative, got " + format_number(v));
+  return v;
+}
+
+double ConfigNode::number_in(const std::string& key, double fallback, double lo, double hi) const {
+  const double v = number(key, fallback);
+  if (!(v >= lo && v <= hi))
+    fail(key, "must lie in [" + format_number(lo) + ", " + format_number(hi) + "], got " + format_number(v));
+  return v;
+}
+
+std::int64_t ConfigNode::integer(const std::string& key, std::int64_t fallback, std::int64_t min_value) const {
+  const toml::node* n = find(key);
+  if (!n) return fallback;
+  auto v = n->value_exact<std::int64_t>();
+  if (!v) fail(key, "expected an integer, got " + describe(*n));
+  if (*v < min_value) fail(key, "must be at least " + std::to_string(min_value) + ", got " + std::to_string(*v));
+  return *v;
+}
+
+bool ConfigNode::boolean(const std::string& key, bool fallback) const {
+  const toml::node* n = find(key);
+  if (!n) return fallback;
+  auto v = n->value_exact<bool>();
+  if (!v) fail(key, "expected true or false, got " + describe(*n));
+  return *v;
+}
+
+std::string ConfigNode::string(const std::string& key, const std::string& fallback) const {
+  const toml::node* n = find(key);
+  if (!n) return fallback;
+  auto v = n->value_exact<std::string>();
+  if (!v) fail(key, "expected a string, got " + describe(*n));
+  return *v;
+}
+
+std::string ConfigNode::choice(const std::string& key, const std::string& fallback,
+                               const std::vector<std::string>& choices) const {
+  const std::string v = string(key, fallback);
+  for (const auto& c : choices)
+    if (c == v) return v;
+  std::string list;
+  for (const auto& c : choices) list += (list.empty() ? "" : ", ") + ("\"" + c + "\"");
+  fail(key, "must be one of " + list + ", got \"" + v + "\"");
+}
+
+Vec3 ConfigNode::vec3(const std::string& key, const Vec3& fallback) const {
+  const toml::node* n = find(key);
+  if (!n) return fallback;
+  const toml::array* a = n->as_array();
+  if (!a || a->size() != 3) fail(key, "expected an array of 3 numbers, got " + describe(*n));
+  Vec3 v;
+  for (int d = 0; d < 3; ++d) {
+    const toml::node* e = a->get(d);
+    if (auto x = e->value_exact<double>()) v[d] = *x;
+    else if (auto i = e->value_exact<std::int64_t>()) v[d] = static_cast<double>(*i);
+    else fail(key, "expected an array of 3 numbers, got " + describe(*n));
+  }
+  if (!v.allFinite()) fail(key, "must be finite");
+  return v;
+}
+
+std::vector<std::int64_t> ConfigNode::integer_list(const std::string& key) const {
+  std::vector<std::int64_t> out;
+  const toml::node* n = find(key);
+  if (!n) return out;
+  const toml::array* a = n->as_array();
+  if (!a) fail(key, "expected an array of integers, got " + describe(*n));
+  for (const auto& e : *a) {
+    auto v = e.value_exact<std::int64_t>();
+    if (!v) fail(key, "expected an array of integers");
+    out.push_back(*v);
+  }
+  return out;
+}
+
+ConfigNode ConfigNode::table(const std::string& key) const {
+  const toml::node* n = table_ ? table_->get(key) : nullptr;
+  if (!n) return ConfigNode(reader_, nullptr, full(key));
+  if (!n->is_table()) {
+    reader_->used_.insert(full(key));
+    fail(key, "expected a table, got " + describe(*n));
+  }
+  return ConfigNode(reader_, n->as_table(), full(key));
+}
+
+std::vector<ConfigNode> ConfigNode::table_array(const std::string& key) const {
+  std::vector<ConfigNode> out;
+  const toml::node* n = find(key);
+  if (!n) return out;
+  const toml::array* a = n->as_array();
+  if (!a || !a->is_array_of_tables()) fail(key, "expected an array of tables ([[" + full(key) + "]])");
+  reader_->used_.erase(full(key));  // members are tracked one by one
+  for (std::size_t i = 0; i < a->size(); ++i)
+    out.push_back(ConfigNode(reader_, a->get(i)->as_table(), full(key) + "[" + std::to_string(i) + "]"));
+  return out;
+}
+
+}  // namespace colza

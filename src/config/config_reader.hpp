@@ -1,0 +1,80 @@
+// Typed, tracked access to a TOML document. Every key read is recorded, so after a
+// scenario has read what it needs, `reject_unknown_keys` reports any key nobody asked for
+// (a misspelt key must not be silently ignored). Overrides from `--set key=value` are
+// merged into the document first and reported as coming from the command line.
+#pragma once
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+#include <toml++/toml.h>
+#include "config/config_error.hpp"
+#include "core/types.hpp"
+
+namespace colza {
+
+class ConfigReader;
+
+// A view on one table of the document, with its dotted path.
+class ConfigNode {
+ public:
+  double number(const std::string& key, double fallback) const;
+  double positive(const std::string& key, double fallback) const;      // > 0
+  double non_negative(const std::string& key, double fallback) const;  // >= 0
+  double number_in(const std::string& key, double fallback, double lo, double hi) const;  // [lo, hi]
+  std::int64_t integer(const std::string& key, std::int64_t fallback, std::int64_t min_value) const;
+  bool boolean(const std::string& key, bool fallback) const;
+  std::string string(const std::string& key, const std::string& fallback) const;
+  // A string that must be one of `choices`.
+  std::string choice(const std::string& key, const std::string& fallback,
+                     const std::vector<std::string>& choices) const;
+  Vec3 vec3(const std::string& key, const Vec3& fallback) const;
+  std::vector<std::int64_t> integer_list(const std::string& key) const;
+  bool has(const std::string& key) const;
+  bool is_string(const std::string& key) const;
+  ConfigNode table(const std::string& key) const;              // empty view if absent
+  std::vector<ConfigNode> table_array(const std::string& key) const;
+  // Marks a whole sub-table as known without reading it (e.g. parameters of an inactive slot).
+  void accept(const std::string& key) const;
+  // Raises a ConfigError about `key` of this table.
+  [[noreturn]] void fail(const std::string& key, const std::string& reason) const;
+  const std::string& path() const { return path_; }
+
+ private:
+  friend class ConfigReader;
+  ConfigNode(const ConfigReader* reader, const toml::table* table, std::string path)
+      : reader_(reader), table_(table), path_(std::move(path)) {}
+  const toml::node* find(const std::string& key) const;
+  std::string full(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  const ConfigReader* reader_;
+  const toml::table* table_;  // may be null (absent table)
+  std::string path_;
+};
+
+class ConfigReader {
+ public:
+  // `source_name` is what errors call the document (the file path).
+  static ConfigReader from_file(const std::string& path);
+  static ConfigReader from_string(const std::string& text, const std::string& source_name);
+  static ConfigReader empty(const std::string& source_name = "(built-in defaults)");
+
+  // key=value, value in TOML syntax (bare words are taken as strings).
+  void apply_override(const std::string& assignment);
+  ConfigNode root() const { return ConfigNode(this, &document_, ""); }
+  void reject_unknown_keys() const;
+  // The document with overrides applied, as TOML text (stored with every result).
+  std::string resolved_text() const;
+  const std::string& source_name() const { return source_; }
+  std::string origin_of(const std::string& full_key) const;
+
+ private:
+  friend class ConfigNode;
+  ConfigReader(toml::table doc, std::string source) : document_(std::move(doc)), source_(std::move(source)) {}
+  toml::table document_;
+  std::string source_;
+  std::set<std::string> overridden_;
+  mutable std::set<std::string> used_;
+};
+
+}  // namespace colza

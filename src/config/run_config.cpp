@@ -1,0 +1,201 @@
+#include "config/run_config.hpp"
+
+#include <filesystem>
+
+#include "contact/slot_registry.hpp"
+#include "io/packing_file.hpp"
+
+namespace colza {
+
+const char* to_string(Scenario s) { return s == Scenario::kOedometer ? "oedometer" : "scene"; }
+
+namespace {
+
+ParticleSpec read_particle(const ConfigNode& t) {
+  ParticleSpec p;
+  p.density = t.positive("density", p.density);
+  p.normal_stiffness = t.positive("normal_stiffness", p.normal_stiffness);
+  p.shear_stiffness = t.positive("shear_stiffness", p.shear_stiffness);
+  p.friction = t.non_negative("friction", p.friction);
+  p.diameter_min = t.positive("diameter_min", p.diameter_min);
+  p.diameter_max = t.positive("diameter_max", p.diameter_max);
+  if (p.diameter_min > p.diameter_max)
+    t.fail("diameter_min", "must not exceed particle.diameter_max (" + std::to_string(p.diameter_max) + ")");
+  return p;
+}
+
+WallSpec read_wall(const ConfigNode& t) {
+  WallSpec w;
+  w.normal_stiffness = t.positive("normal_stiffness", w.normal_stiffness);
+  w.shear_stiffness = t.positive("shear_stiffness", w.shear_stiffness);
+  w.friction = t.non_negative("friction", w.friction);
+  return w;
+}
+
+IntegrationSpec read_integration(const ConfigNode& t) {
+  IntegrationSpec s;
+  s.damping = t.number_in("damping", s.damping, 0.0, 0.999);
+  s.damping_form = t.choice("damping_form", "pfc", {"pfc", "yade"}) == "pfc" ? DampingForm::kPfc : DampingForm::kYade;
+  s.gravity = t.vec3("gravity", s.gravity);
+  if (t.is_string("time_step")) {
+    t.choice("time_step", "auto", {"auto"});
+    s.automatic_time_step = true;
+  } else if (t.has("time_step")) {
+    s.automatic_time_step = false;
+    s.time_step = t.positive("time_step", 0.0);
+  }
+  s.safety_factor = t.number_in("safety_factor", s.safety_factor, 1e-3, 1.0);
+  s.recompute_interval = t.integer("recompute_interval", s.recompute_interval, 1);
+  s.verlet_skin = t.positive("verlet_skin", s.verlet_skin);
+  return s;
+}
+
+SampleSpec read_sample(const ConfigNode& t) {
+  SampleSpec s;
+  s.count = t.integer("count", s.count, 1);
+  s.settle_unbalanced_force = t.positive("settle_unbalanced_force", s.settle_unbalanced_force);
+  s.settle_max_time = t.positive("settle_max_time", s.settle_max_time);
+  s.settle_check_interval = t.integer("settle_check_interval", s.settle_check_interval, 1);
+  s.max_placement_attempts = t.integer("max_placement_attempts", s.max_placement_attempts, 1);
+  return s;
+}
+
+OedometerSpec read_oedometer(const ConfigNode& t, const ParticleSpec& particle) {
+  OedometerSpec o;
+  o.cylinder_diameter = t.positive("cylinder_diameter", o.cylinder_diameter);
+  o.cylinder_height = t.positive("cylinder_height", o.cylinder_height);
+  o.generation_height = t.positive("generation_height", o.generation_height);
+  o.piston_speed = t.positive("piston_speed", o.piston_speed);
+  o.stop_force = t.positive("stop_force", o.stop_force);
+  o.max_piston_travel = t.positive("max_piston_travel", o.max_piston_travel);
+  o.record_interval = t.integer("record_interval", o.record_interval, 1);
+  o.fit_force_min = t.non_negative("fit_force_min", o.fit_force_min);
+  o.fit_force_max = t.positive("fit_force_max", o.fit_force_max);
+  if (o.fit_force_min >= o.fit_force_max) t.fail("fit_force_min", "must be below oedometer.fit_force_max");
+  if (o.cylinder_diameter <= particle.diameter_max)
+    t.fail("cylinder_diameter", "must exceed particle.diameter_max");
+  if (o.generation_height < o.cylinder_height) t.fail("generation_height", "must be at least oedometer.cylinder_height");
+  return o;
+}
+
+Wall read_scene_wall(const ConfigNode& t) {
+  const std::string shape = t.choice("shape", "plane", {"plane", "cylinder", "rectangle"});
+  const std::string name = t.string("name", shape);
+  Wall w;
+  if (shape == "plane") {
+    const Vec3 n = t.vec3("normal", Vec3::UnitZ());
+    if (n.norm() == 0.0) t.fail("normal", "must not be zero");
+    w = Wall::plane(name, t.vec3("point", Vec3::Zero()), n);
+  } else if (shape == "cylinder") {
+    const Vec3 axis = t.vec3("axis", Vec3::UnitZ());
+    if (axis.norm() == 0.0) t.fail("axis", "must not be zero");
+    const double lo = t.number("axial_min", -1e300), hi = t.number("axial_max", 1e300);
+    if (lo >= hi) t.fail("axial_min", "must be below axial_max");
+    w = Wall::cylinder(name, t.vec3("point", Vec3::Zero()), axis, t.positive("radius", 0.0), lo, hi);
+  } else {
+    const Vec3 n = t.vec3("normal", Vec3::UnitZ());
+    const Vec3 u = t.vec3("axis_u", Vec3::UnitX());
+    if (n.norm() == 0.0) t.fail("normal", "must not be zero");
+    if (n.normalized().cross(u).norm() < 1e-9) t.fail("axis_u", "must not be parallel to the normal");
+    w = Wall::rectangle(name, t.vec3("center", Vec3::Zero()), n, u, t.positive("half_u", 0.0),
+                        t.positive("half_v", 0.0));
+  }
+  w.velocity = t.vec3("velocity", Vec3::Zero());
+  return w;
+}
+
+SceneSpec read_scene(const ConfigNode& t, const ConfigReader& reader) {
+  SceneSpec s;
+  s.steps = t.integer("steps", 0, 1);
+  if (!t.has("steps")) t.fail("steps", "is required (number of steps to run)");
+  s.record_interval = t.integer("record_interval", 1, 1);
+  s.record_particles = t.integer_list("record_particles");
+  s.packing_file = t.string("packing_file", "");
+  for (const ConfigNode& p : t.table_array("particles")) {
+    SceneParticle sp;
+    sp.position = p.vec3("position", Vec3::Zero());
+    sp.radius = p.positive("radius", 0.0);
+    if (!p.has("radius")) p.fail("radius", "is required");
+    sp.velocity = p.vec3("velocity", Vec3::Zero());
+    sp.angular_velocity = p.vec3("angular_velocity", Vec3::Zero());
+    sp.fixed = p.boolean("fixed", false);
+    s.particles.push_back(sp);
+  }
+  if (!s.packing_file.empty()) {
+    std::filesystem::path file(s.packing_file);
+    const std::string origin = reader.origin_of(t.path() + ".packing_file");
+    if (file.is_relative() && origin.rfind("--set", 0) != 0)
+      file = std::filesystem::path(reader.source_name()).parent_path() / file;
+    for (const PackedSphere& ps : read_packing(file.string(), t.path() + ".packing_file")) {
+      SceneParticle sp;
+      sp.position = ps.position;
+      sp.radius = ps.radius;
+      s.particles.push_back(sp);
+    }
+  }
+  for (const ConfigNode& w : t.table_array("walls")) s.walls.push_back(read_scene_wall(w));
+  for (std::int64_t i : s.record_particles)
+    if (i < 0 || i >= static_cast<std::int64_t>(s.particles.size()))
+      t.fail("record_particles", "index " + std::to_string(i) + " is not a particle of the scene (" +
+                                     std::to_string(s.particles.size()) + " particles)");
+  return s;
+}
+
+}  // namespace
+
+RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
+  const ConfigNode root = reader.root();
+  RunConfig c;
+  c.source = reader.source_name();
+  const std::string declared = root.string("scenario", to_string(scenario));
+  if (declared != to_string(scenario))
+    root.fail("scenario", std::string("this file is for scenario \"") + declared + "\", not \"" + to_string(scenario) + "\"");
+  root.string("title", "");
+  root.string("provenance", "");
+  c.seed = static_cast<std::uint64_t>(root.integer("seed", 1, 0));
+  c.particle = read_particle(root.table("particle"));
+  c.wall = read_wall(root.table("wall"));
+  const ConfigNode contact = root.table("contact");
+  c.stiffness_rule = contact.choice("stiffness_rule", "series", {"series", "contact"}) == "series"
+                         ? StiffnessRule::kSeries : StiffnessRule::kContact;
+  c.contact = read_contact_model(contact);
+  c.integration = read_integration(root.table("integration"));
+  if (scenario == Scenario::kOedometer) {
+    c.sample = read_sample(root.table("sample"));
+    c.oedometer = read_oedometer(root.table("oedometer"), c.particle);
+  } else {
+    c.scene = read_scene(root.table("scene"), reader);
+    if (c.integration.automatic_time_step && !root.table("integration").has("time_step"))
+      root.table("integration").fail("time_step", "a scene needs a fixed time step (s) or \"auto\" stated explicitly");
+  }
+  reader.reject_unknown_keys();
+  c.resolved_toml = reader.resolved_text();
+  return c;
+}
+
+RunConfig load_run_config(Scenario scenario, const std::string& config_path,
+                          const std::vector<std::string>& overrides) {
+  ConfigReader reader = config_path.empty() ? ConfigReader::empty() : ConfigReader::from_file(config_path);
+  for (const auto& o : overrides) reader.apply_override(o);
+  return read_run_config(scenario, reader);
+}
+
+PhysicsSettings make_physics(const RunConfig& c) {
+  PhysicsSettings ph;
+  ph.particle_materials.push_back(
+      {"seed", c.particle.density, c.particle.normal_stiffness, c.particle.shear_stiffness, c.particle.friction});
+  ph.wall_materials.push_back({"wall", c.wall.normal_stiffness, c.wall.shear_stiffness, c.wall.friction});
+  ph.stiffness_rule = c.stiffness_rule;
+  ph.model = c.contact;
+  ph.integrator.damping = c.integration.damping;
+  ph.integrator.damping_form = c.integration.damping_form;
+  ph.integrator.gravity = c.integration.gravity;
+  ph.time_step.automatic = c.integration.automatic_time_step;
+  ph.time_step.fixed_dt = c.integration.time_step;
+  ph.time_step.safety_factor = c.integration.safety_factor;
+  ph.time_step.recompute_interval = static_cast<std::uint64_t>(c.integration.recompute_interval);
+  ph.skin = c.integration.verlet_skin;
+  return ph;
+}
+
+}  // namespace colza

@@ -1,0 +1,102 @@
+// The typed run configuration: one struct per config table, defaults = the paper's
+// Table 1 (compression start, physics.md section 5). data/oedometer.toml states the
+// same values with their provenance; a unit test keeps the two equal.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+#include "config/config_reader.hpp"
+#include "engine/world.hpp"
+
+namespace colza {
+
+struct ParticleSpec {                 // [particle]
+  double density = 1250.0;            // rho_p (kg/m^3)
+  double normal_stiffness = 437e3;    // kn of the particle entity (N/m)
+  double shear_stiffness = 100e3;     // ks (N/m)
+  double friction = 0.20;             // mu_pp (-)
+  double diameter_min = 6e-3;         // m; diameters uniform on [min, max]
+  double diameter_max = 7e-3;         // m
+};
+
+struct WallSpec {                     // [wall]
+  double normal_stiffness = 4000e3;   // kn_w (N/m)
+  double shear_stiffness = 1000e3;    // ks_w (N/m)
+  double friction = 0.23;             // mu_pw (-)
+};
+
+struct IntegrationSpec {              // [integration]
+  double damping = 0.7;               // local damping alpha (-)
+  DampingForm damping_form = DampingForm::kPfc;
+  Vec3 gravity = Vec3(0.0, 0.0, -9.81);
+  bool automatic_time_step = true;    // time_step = "auto" or a number (s)
+  double time_step = 0.0;
+  double safety_factor = 0.8;
+  std::int64_t recompute_interval = 100;
+  double verlet_skin = 0.5e-3;        // m
+};
+
+struct SampleSpec {                   // [sample]
+  std::int64_t count = 2600;          // spheres generated before settling
+  double settle_unbalanced_force = 1e-4;  // N, mean over particles (paper: 1e-4 oedometer)
+  double settle_max_time = 5.0;       // s of simulated time before settling gives up
+  std::int64_t settle_check_interval = 200;  // steps between checks
+  std::int64_t max_placement_attempts = 1000000;
+};
+
+struct OedometerSpec {                // [oedometer]
+  double cylinder_diameter = 0.100;   // m (paper: 100 mm)
+  double cylinder_height = 0.080;     // m, the rim: particles whose top is above it are discarded
+  double generation_height = 0.200;   // m, particles are generated in diameter x this height
+  double piston_speed = 0.5 / 60.0;   // m/s (500 mm/min)
+  double stop_force = 30e3;           // N, loading ends when the piston force reaches this
+  double max_piston_travel = 0.040;   // m, loading also ends here
+  std::int64_t record_interval = 50;  // steps between curve samples
+  double fit_force_min = 150.0;       // N, displacement zeroed here; fit range start
+  double fit_force_max = 29.3e3;      // N, fit range end (paper logs 150 N - 29.3 kN)
+};
+
+struct SceneParticle {
+  Vec3 position = Vec3::Zero();
+  double radius = 0.0;
+  Vec3 velocity = Vec3::Zero();
+  Vec3 angular_velocity = Vec3::Zero();
+  bool fixed = false;
+};
+
+struct SceneSpec {                    // [scene]
+  std::int64_t steps = 0;
+  std::string packing_file;           // optional "x y z r" per line, full precision
+  std::vector<SceneParticle> particles;
+  std::vector<Wall> walls;
+  std::int64_t record_interval = 1;
+  std::vector<std::int64_t> record_particles;  // indices; empty = none
+};
+
+struct RunConfig {
+  std::string source;                 // file name (or built-in defaults)
+  std::string resolved_toml;          // the configuration as used, overrides applied
+  std::uint64_t seed = 1;
+  ParticleSpec particle;
+  WallSpec wall;
+  ContactModel contact;
+  StiffnessRule stiffness_rule = StiffnessRule::kSeries;
+  IntegrationSpec integration;
+  SampleSpec sample;
+  OedometerSpec oedometer;
+  SceneSpec scene;
+};
+
+enum class Scenario { kOedometer, kScene };
+const char* to_string(Scenario s);
+
+// Reads and validates everything the scenario needs, then rejects unknown keys.
+// `config_path` empty = built-in defaults. Throws ConfigError.
+RunConfig load_run_config(Scenario scenario, const std::string& config_path,
+                          const std::vector<std::string>& overrides);
+RunConfig read_run_config(Scenario scenario, const ConfigReader& reader);
+
+// Materials, contact model and integration settings for the Stepper.
+PhysicsSettings make_physics(const RunConfig& config);
+
+}  // namespace colza

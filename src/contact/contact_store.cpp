@@ -1,0 +1,133 @@
+#include "contact/contact_store.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "core/particles.hpp"
+
+namespace colza {
+
+namespace {
+
+// Merge old (a,b)-sorted pairs with history into new sorted pairs. Pairs only in the old
+// list are dropped unless bonded, in which case they are inserted in order.
+void merge_history(std::vector<Index>& new_a, std::vector<Index>& new_b,
+                   const std::vector<Index>& old_a, const std::vector<Index>& old_b,
+                   const std::vector<ContactHistory>& old_h, std::vector<ContactHistory>& new_h) {
+  std::vector<Index> out_a, out_b;
+  std::vector<ContactHistory> out_h;
+  out_a.reserve(new_a.size());
+  out_b.reserve(new_a.size());
+  out_h.reserve(new_a.size());
+  std::size_t i = 0, j = 0;
+  auto key_less = [](Index a1, Index b1, Index a2, Index b2) { return a1 < a2 || (a1 == a2 && b1 < b2); };
+  while (i < new_a.size() || j < old_a.size()) {
+    const bool take_new = j >= old_a.size() ||
+                          (i < new_a.size() && !key_less(old_a[j], old_b[j], new_a[i], new_b[i]));
+    if (take_new) {
+      const bool same = j < old_a.size() && old_a[j] == new_a[i] && old_b[j] == new_b[i];
+      out_a.push_back(new_a[i]);
+      out_b.push_back(new_b[i]);
+      out_h.push_back(same ? old_h[j] : ContactHistory{});
+      ++i;
+      if (same) ++j;
+    } else {  // pair only in the old list
+      if (old_h[j].bonded) {
+        out_a.push_back(old_a[j]);
+        out_b.push_back(old_b[j]);
+        out_h.push_back(old_h[j]);
+      }
+      ++j;
+    }
+  }
+  new_a.swap(out_a);
+  new_b.swap(out_b);
+  new_h.swap(out_h);
+}
+
+}  // namespace
+
+void ContactStore::adopt_particle_pairs(std::vector<Index> first, std::vector<Index> second) {
+  std::vector<ContactHistory> history;
+  merge_history(first, second, particle_pairs.first, particle_pairs.second, particle_pairs.history, history);
+  particle_pairs.first.swap(first);
+  particle_pairs.second.swap(second);
+  particle_pairs.history.swap(history);
+}
+
+void ContactStore::adopt_wall_pairs(std::vector<Index> wall, std::vector<Index> particle) {
+  std::vector<ContactHistory> history;
+  merge_history(wall, particle, wall_pairs.wall, wall_pairs.particle, wall_pairs.history, history);
+  wall_pairs.wall.swap(wall);
+  wall_pairs.particle.swap(particle);
+  wall_pairs.history.swap(history);
+}
+
+void ContactStore::renumber_particles(const std::vector<Index>& old_to_new) {
+  const Index removed = ParticleArrays::kRemoved;
+  {  // particle pairs: keep (min, max) order and re-sort (a permutation may reorder pairs)
+    auto& L = particle_pairs;
+    std::vector<std::size_t> keep;
+    for (std::size_t k = 0; k < L.size(); ++k)
+      if (old_to_new[L.first[k]] != removed && old_to_new[L.second[k]] != removed) keep.push_back(k);
+    std::vector<Index> a(keep.size()), b(keep.size());
+    std::vector<ContactHistory> h(keep.size());
+    for (std::size_t m = 0; m < keep.size(); ++m) {
+      Index i = old_to_new[L.first[keep[m]]], j = old_to_new[L.second[keep[m]]];
+      h[m] = L.history[keep[m]];
+      if (i > j) {  // swapping bodies 1 and 2 flips the normal and the force on body 2
+        std::swap(i, j);
+        h[m].shear_force = -h[m].shear_force;
+        h[m].normal = -h[m].normal;
+      }
+      a[m] = i;
+      b[m] = j;
+    }
+    std::vector<std::size_t> order(keep.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+      return a[x] < a[y] || (a[x] == a[y] && b[x] < b[y]);
+    });
+    L.first.resize(order.size());
+    L.second.resize(order.size());
+    L.history.resize(order.size());
+    for (std::size_t m = 0; m < order.size(); ++m) {
+      L.first[m] = a[order[m]];
+      L.second[m] = b[order[m]];
+      L.history[m] = h[order[m]];
+    }
+  }
+  {  // wall pairs: sorted by (wall, particle)
+    auto& L = wall_pairs;
+    std::vector<std::size_t> keep;
+    for (std::size_t k = 0; k < L.size(); ++k)
+      if (old_to_new[L.particle[k]] != removed) keep.push_back(k);
+    std::vector<std::size_t> order = keep;
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+      const Index px = old_to_new[L.particle[x]], py = old_to_new[L.particle[y]];
+      return L.wall[x] < L.wall[y] || (L.wall[x] == L.wall[y] && px < py);
+    });
+    WallPairList out;
+    for (std::size_t k : order) {
+      out.wall.push_back(L.wall[k]);
+      out.particle.push_back(old_to_new[L.particle[k]]);
+      out.history.push_back(L.history[k]);
+    }
+    L = std::move(out);
+  }
+}
+
+std::size_t ContactStore::touching_particle_contacts() const {
+  return std::count_if(particle_pairs.history.begin(), particle_pairs.history.end(),
+                       [](const ContactHistory& h) { return h.touching != 0; });
+}
+std::size_t ContactStore::touching_wall_contacts() const {
+  return std::count_if(wall_pairs.history.begin(), wall_pairs.history.end(),
+                       [](const ContactHistory& h) { return h.touching != 0; });
+}
+std::size_t ContactStore::bonded_contacts() const {
+  return std::count_if(particle_pairs.history.begin(), particle_pairs.history.end(),
+                       [](const ContactHistory& h) { return h.bonded != 0; });
+}
+
+}  // namespace colza

@@ -1,0 +1,42 @@
+// Candidate pairs from the neighbour search and the contact history kept by pair.
+// Particle pairs form a half list (first < second), sorted by (first, second); wall
+// pairs are sorted by (wall, particle). A rebuild hands its new sorted lists to
+// `adopt_*`, which carries each surviving pair's history over by a merge.
+#pragma once
+#include <vector>
+#include "contact/history.hpp"
+#include "core/types.hpp"
+
+namespace colza {
+
+struct ParticlePairList {
+  std::vector<Index> first, second;
+  std::vector<ContactHistory> history;
+  std::size_t size() const { return first.size(); }
+};
+
+struct WallPairList {
+  std::vector<Index> wall, particle;
+  std::vector<ContactHistory> history;
+  std::size_t size() const { return wall.size(); }
+};
+
+class ContactStore {
+ public:
+  ParticlePairList particle_pairs;
+  WallPairList wall_pairs;
+
+  // Replace the candidate lists, keeping the history of pairs present in both old and new
+  // lists. A bonded pair missing from the new list is kept (a bond holds beyond the skin).
+  void adopt_particle_pairs(std::vector<Index> first, std::vector<Index> second);
+  void adopt_wall_pairs(std::vector<Index> wall, std::vector<Index> particle);
+
+  // Rename particles after removal/reordering (old_to_new[i] == kRemoved drops the pair).
+  void renumber_particles(const std::vector<Index>& old_to_new);
+
+  std::size_t touching_particle_contacts() const;
+  std::size_t touching_wall_contacts() const;
+  std::size_t bonded_contacts() const;
+};
+
+}  // namespace colza

@@ -1,0 +1,24 @@
+// Chooses the implementation of each contact-law slot by name from the config's
+// [contact] table. One row per implementation: name, and a factory that reads the
+// implementation's parameters from [contact.<name>].
+#pragma once
+#include <string>
+#include <vector>
+#include "config/config_reader.hpp"
+#include "contact/slots.hpp"
+
+namespace colza {
+
+// Reads contact.normal / contact.tangential / contact.bond and the chosen
+// implementations' parameter tables; validates them.
+ContactModel read_contact_model(const ConfigNode& contact);
+
+// Registered names, per slot (for --help and error messages).
+std::vector<std::string> normal_slot_names();
+std::vector<std::string> tangential_slot_names();
+std::vector<std::string> bond_slot_names();
+
+// Names of the slot implementations in use, e.g. {"linear", "coulomb", "contact_bond"}.
+std::string describe(const ContactModel& model);
+
+}  // namespace colza

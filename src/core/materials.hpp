@@ -1,0 +1,66 @@
+// Entity properties and how they combine into contact parameters (physics.md section 2).
+#pragma once
+#include <string>
+#include <vector>
+#include "core/types.hpp"
+
+namespace colza {
+
+// How entity stiffnesses become contact stiffnesses.
+enum class StiffnessRule {
+  kSeries,   // Kn = kn1 kn2 / (kn1 + kn2), same for Ks (PFC3D 4 linear model)
+  kContact,  // the entity numbers are the contact stiffnesses; for a pair of different
+             // entities the series rule would be ambiguous, so both must agree (or a wall's value is used)
+};
+const char* to_string(StiffnessRule rule);
+
+struct ParticleMaterial {
+  std::string name;
+  double density = 0.0;   // kg/m^3
+  double kn = 0.0;        // normal stiffness of the entity (N/m)
+  double ks = 0.0;        // shear stiffness of the entity (N/m)
+  double friction = 0.0;  // particle-particle friction coefficient mu_pp (-)
+};
+
+struct WallMaterial {
+  std::string name;
+  double kn = 0.0;        // N/m
+  double ks = 0.0;        // N/m
+  double friction = 0.0;  // particle-wall friction coefficient mu_pw (-), used as is
+};
+
+// Everything the contact law needs to know about one pair of entities.
+struct PairParameters {
+  double kn = 0.0;        // contact normal stiffness Kn (N/m)
+  double ks = 0.0;        // contact shear stiffness Ks (N/m)
+  double friction = 0.0;  // Coulomb coefficient mu
+};
+
+double combine_stiffness(double k1, double k2, StiffnessRule rule);
+
+// Particle-particle: stiffness by the rule, friction = min(mu1, mu2) (PFC's rule; equal for
+// one seed material). Particle-wall: stiffness by the rule, friction = the wall's mu_pw.
+PairParameters particle_pair(const ParticleMaterial& a, const ParticleMaterial& b, StiffnessRule rule);
+PairParameters particle_wall_pair(const ParticleMaterial& p, const WallMaterial& w, StiffnessRule rule);
+
+// Precomputed table of pair parameters, indexed by material indices.
+class PairTable {
+ public:
+  PairTable() = default;
+  PairTable(const std::vector<ParticleMaterial>& particles, const std::vector<WallMaterial>& walls,
+            StiffnessRule rule);
+  const PairParameters& particle_particle(std::size_t a, std::size_t b) const {
+    return pp_[a * n_particle_ + b];
+  }
+  const PairParameters& particle_wall(std::size_t p, std::size_t w) const {
+    return pw_[p * n_wall_ + w];
+  }
+  StiffnessRule rule() const { return rule_; }
+
+ private:
+  std::size_t n_particle_ = 0, n_wall_ = 0;
+  std::vector<PairParameters> pp_, pw_;
+  StiffnessRule rule_ = StiffnessRule::kSeries;
+};
+
+}  // namespace colza

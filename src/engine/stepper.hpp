@@ -1,0 +1,66 @@
+// One DEM cycle (YADE's pipeline, PFC's cycle):
+//   neighbour lists (if stale) -> contact geometry -> contact law -> forces on bodies
+//   -> leapfrog integration with local damping -> walls move -> clock advances.
+#pragma once
+#include "engine/energy.hpp"
+#include "engine/world.hpp"
+#include "neighbour/neighbour_search.hpp"
+
+namespace colza {
+
+// What happened to contacts in the last step.
+struct ContactEvents {
+  std::uint64_t bonds_broken_tension = 0;
+  std::uint64_t bonds_broken_shear = 0;
+};
+
+class Stepper {
+ public:
+  explicit Stepper(PhysicsSettings physics);
+
+  // Sets world.dt from the settings (fixed or critical estimate) and forces a neighbour rebuild.
+  void prepare(World& world);
+  void step(World& world) {
+    begin_step(world);
+    finish_step(world);
+  }
+  // Same, calling observer(world) between the force computation and the integration: the
+  // observer sees positions x(t), velocities v(t - dt/2) and the forces of step t, which is
+  // what a YADE PyRunner placed before NewtonIntegrator sees.
+  template <class Observer>
+  void step(World& world, Observer&& observer) {
+    begin_step(world);
+    observer(static_cast<const World&>(world));
+    finish_step(world);
+  }
+  // The two halves of a step: time step update, neighbour lists and forces; then
+  // integration, wall motion and the clock.
+  void begin_step(World& world);
+  void finish_step(World& world);
+  void run(World& world, std::uint64_t steps);
+
+  // Call after particles were added, removed or reordered, or walls added.
+  void invalidate_neighbours() { neighbours_.invalidate(); }
+  void update_time_step(World& world);
+  // Stored plus dissipated energies: constant (up to O(dt^2)) when the bookkeeping is complete.
+  EnergySnapshot energy(const World& world) const { return measure_energy(world, physics_, pairs_); }
+
+  const PhysicsSettings& physics() const { return physics_; }
+  const PairTable& pairs() const { return pairs_; }
+  const IntegrationReport& last_integration() const { return last_integration_; }
+  const EnergyLedger& ledger() const { return ledger_; }
+  const ContactEvents& events() const { return events_; }  // cumulative
+  const NeighbourSearch& neighbours() const { return neighbours_; }
+  void rebuild_neighbours_now(World& world) { neighbours_.rebuild(world.particles, world.walls, world.contacts); }
+
+ private:
+  void compute_forces(World& world);
+  PhysicsSettings physics_;
+  PairTable pairs_;
+  NeighbourSearch neighbours_;
+  IntegrationReport last_integration_;
+  EnergyLedger ledger_;
+  ContactEvents events_;
+};
+
+}  // namespace colza

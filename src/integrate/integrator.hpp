@@ -1,0 +1,31 @@
+// Leapfrog integration with local (non-viscous, Cundall) damping (physics.md section 3).
+//   v(t + dt/2) = v(t - dt/2) + dt a(t),   x(t + dt) = x(t) + dt v(t + dt/2)
+// and the same for rotation with the scalar inertia of a sphere.
+#pragma once
+#include "core/particles.hpp"
+
+namespace colza {
+
+enum class DampingForm {
+  kPfc,   // Fd_i = -alpha |F_i| sign(v_i), v the mid-step velocity v(t - dt/2) (PFC3D)
+  kYade,  // a_i <- a_i (1 - alpha sign(a_i (v_i + dt/2 a_i)))  (YADE NewtonIntegrator)
+};
+const char* to_string(DampingForm form);
+
+struct IntegratorSettings {
+  double damping = 0.7;  // local damping coefficient alpha (-)
+  DampingForm damping_form = DampingForm::kPfc;
+  Vec3 gravity = Vec3(0.0, 0.0, -9.81);  // m/s^2
+};
+
+struct IntegrationReport {
+  double mean_unbalanced_force = 0.0;  // mean over free particles of |F_contact + m g| (N)
+  double max_unbalanced_force = 0.0;
+  double damping_work = 0.0;  // energy removed by damping this step (J), >= 0
+};
+
+// Advances all free particles by one step using the forces and torques in `particles`.
+// Fixed particles move with their prescribed velocity. Gravity is added here.
+IntegrationReport integrate_step(ParticleArrays& particles, const IntegratorSettings& settings, double dt);
+
+}  // namespace colza

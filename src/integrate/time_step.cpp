@@ -1,0 +1,43 @@
+#include "integrate/time_step.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace colza {
+
+double critical_time_step(const ParticleArrays& p, const ContactStore& contacts, const PairTable& pairs) {
+  const std::size_t n = p.size();
+  std::vector<double> k_trans(n, 0.0), k_shear(n, 0.0);
+  const auto& pp = contacts.particle_pairs;
+  for (std::size_t c = 0; c < pp.size(); ++c) {
+    if (!pp.history[c].touching) continue;
+    const Index i = pp.first[c], j = pp.second[c];
+    const PairParameters& q = pairs.particle_particle(p.material[i], p.material[j]);
+    k_trans[i] += q.kn + q.ks;
+    k_trans[j] += q.kn + q.ks;
+    k_shear[i] += q.ks;
+    k_shear[j] += q.ks;
+  }
+  const auto& pw = contacts.wall_pairs;
+  for (std::size_t c = 0; c < pw.size(); ++c) {
+    if (!pw.history[c].touching) continue;
+    const Index i = pw.particle[c];
+    const PairParameters& q = pairs.particle_wall(p.material[i], pw.wall[c]);
+    k_trans[i] += q.kn + q.ks;
+    k_shear[i] += q.ks;
+  }
+  double dt = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (k_trans[i] == 0.0) {
+      const PairParameters& q = pairs.particle_particle(p.material[i], p.material[i]);
+      k_trans[i] = q.kn + q.ks;
+      k_shear[i] = q.ks;
+    }
+    const double r = p.radius[i];
+    dt = std::min(dt, std::sqrt(p.mass[i] / k_trans[i]));
+    if (k_shear[i] > 0.0) dt = std::min(dt, std::sqrt(p.inertia[i] / (k_shear[i] * r * r)));
+  }
+  return dt;
+}
+
+}  // namespace colza

@@ -1,0 +1,81 @@
+#include "io/hdf5_writer.hpp"
+
+#include <H5Cpp.h>
+
+namespace colza {
+
+Hdf5Writer::Hdf5Writer(const std::string& file)
+    : file_(std::make_unique<H5::H5File>(file, H5F_ACC_TRUNC)) {}
+
+Hdf5Writer::~Hdf5Writer() = default;
+
+void Hdf5Writer::close() {
+  if (file_) file_->close();
+  file_.reset();
+}
+
+void Hdf5Writer::attribute(const std::string& name, const std::string& value) {
+  H5::StrType type(H5::PredType::C_S1, std::max<std::size_t>(1, value.size()));
+  H5::Attribute a = file_->createAttribute(name, type, H5::DataSpace(H5S_SCALAR));
+  a.write(type, value.empty() ? std::string(" ") : value);
+}
+
+void Hdf5Writer::attribute(const std::string& name, double value) {
+  H5::Attribute a = file_->createAttribute(name, H5::PredType::NATIVE_DOUBLE, H5::DataSpace(H5S_SCALAR));
+  a.write(H5::PredType::NATIVE_DOUBLE, &value);
+}
+
+void Hdf5Writer::attribute(const std::string& name, std::int64_t value) {
+  H5::Attribute a = file_->createAttribute(name, H5::PredType::NATIVE_INT64, H5::DataSpace(H5S_SCALAR));
+  a.write(H5::PredType::NATIVE_INT64, &value);
+}
+
+namespace {
+
+H5::Group ensure_group(H5::H5File& file, const std::string& path) {
+  std::string partial;
+  std::size_t start = 0;
+  while (start < path.size()) {
+    const auto slash = path.find('/', start);
+    partial += "/" + path.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+    if (!file.nameExists(partial)) file.createGroup(partial).close();
+    if (slash == std::string::npos) break;
+    start = slash + 1;
+  }
+  return file.openGroup(partial);
+}
+
+void write_doubles(H5::Group& g, const std::string& name, const double* data, hsize_t rows, hsize_t cols) {
+  const hsize_t dims[2] = {rows, cols};
+  H5::DataSpace space(cols == 1 ? 1 : 2, dims);
+  H5::DataSet ds = g.createDataSet(name, H5::PredType::NATIVE_DOUBLE, space);
+  if (rows > 0) ds.write(data, H5::PredType::NATIVE_DOUBLE);
+}
+
+}  // namespace
+
+void Hdf5Writer::write_table(const std::string& group, const Table& table) {
+  H5::Group g = ensure_group(*file_, group);
+  for (std::size_t k = 0; k < table.names.size(); ++k)
+    write_doubles(g, table.names[k], table.columns[k].data(), table.columns[k].size(), 1);
+}
+
+void Hdf5Writer::write_particles(const std::string& group, const ParticleArrays& p) {
+  H5::Group g = ensure_group(*file_, group);
+  static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
+  write_doubles(g, "position", p.position.empty() ? nullptr : p.position[0].data(), p.size(), 3);
+  write_doubles(g, "velocity", p.velocity.empty() ? nullptr : p.velocity[0].data(), p.size(), 3);
+  write_doubles(g, "angular_velocity", p.angular_velocity.empty() ? nullptr : p.angular_velocity[0].data(), p.size(), 3);
+  write_doubles(g, "radius", p.radius.data(), p.size(), 1);
+}
+
+void write_provenance(Hdf5Writer& h5, const std::string& scenario, std::uint64_t seed, const std::string& config_toml) {
+  h5.attribute("schema_version", static_cast<std::int64_t>(kResultSchemaVersion));
+  h5.attribute("colza_version", std::string("0.1.0"));
+  h5.attribute("git_revision", std::string(COLZA_GIT_REVISION));
+  h5.attribute("scenario", scenario);
+  h5.attribute("seed", static_cast<std::int64_t>(seed));
+  h5.attribute("config_toml", config_toml);
+}
+
+}  // namespace colza

@@ -1,0 +1,36 @@
+// HDF5 result files (result.h5). Layout, schema version 1:
+//   /                 attributes: schema_version, colza_version, git_revision, scenario,
+//                     seed, config_toml (the configuration as used) and summary values
+//   /curve            one 1-D dataset per recorded column (SI units, see curve.csv)
+//   /particles/<tag>  position (N x 3), velocity (N x 3), angular_velocity (N x 3), radius (N)
+#pragma once
+#include <memory>
+#include <string>
+#include "core/particles.hpp"
+#include "io/table.hpp"
+
+namespace H5 { class H5File; }
+
+namespace colza {
+
+inline constexpr int kResultSchemaVersion = 1;
+
+class Hdf5Writer {
+ public:
+  explicit Hdf5Writer(const std::string& file);
+  ~Hdf5Writer();
+  void attribute(const std::string& name, const std::string& value);
+  void attribute(const std::string& name, double value);
+  void attribute(const std::string& name, std::int64_t value);
+  void write_table(const std::string& group, const Table& table);
+  void write_particles(const std::string& group, const ParticleArrays& particles);
+  void close();
+
+ private:
+  std::unique_ptr<H5::H5File> file_;
+};
+
+// Writes the standard root attributes (schema, version, git revision, scenario, seed, config).
+void write_provenance(Hdf5Writer& h5, const std::string& scenario, std::uint64_t seed, const std::string& config_toml);
+
+}  // namespace colza

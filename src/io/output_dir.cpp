@@ -1,0 +1,56 @@
+#include "io/output_dir.hpp"
+
+#include <algorithm>
+#include <unistd.h>
+
+#include "config/config_error.hpp"
+
+namespace colza {
+
+namespace fs = std::filesystem;
+
+void check_output_dir(const fs::path& dir, bool overwrite) {
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw ConfigError("--out", dir.string(), "exists and is not a directory");
+  if (!overwrite && fs::exists(dir / "summary.json", ec))
+    throw ConfigError("--out", dir.string(), "already holds a result (summary.json); pass --force to replace it");
+}
+
+OutputStaging::OutputStaging(const fs::path& dir, bool overwrite) : dir_(dir) {
+  check_output_dir(dir, overwrite);
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) {
+    fs::create_directories(dir, ec);
+    if (ec) throw ConfigError("--out", dir.string(), "cannot create the directory: " + ec.message());
+    created_dir_ = true;
+  }
+  staging_ = dir / (".colza-partial-" + std::to_string(::getpid()));
+  fs::create_directories(staging_, ec);
+  if (ec) throw ConfigError("--out", dir.string(), "cannot write into the directory: " + ec.message());
+}
+
+std::string OutputStaging::path(const std::string& name) {
+  if (std::find(files_.begin(), files_.end(), name) == files_.end()) files_.push_back(name);
+  return (staging_ / name).string();
+}
+
+void OutputStaging::commit() {
+  // summary.json last: its presence marks a complete result.
+  std::stable_partition(files_.begin(), files_.end(), [](const std::string& f) { return f != "summary.json"; });
+  // An earlier result being replaced (--force) stops looking complete before any file moves.
+  std::error_code ec;
+  fs::remove(dir_ / "summary.json", ec);
+  for (const auto& f : files_) fs::rename(staging_ / f, dir_ / f);
+  fs::remove_all(staging_);
+  committed_ = true;
+}
+
+OutputStaging::~OutputStaging() {
+  if (committed_) return;
+  std::error_code ec;
+  fs::remove_all(staging_, ec);
+  if (created_dir_ && fs::is_empty(dir_, ec)) fs::remove(dir_, ec);
+}
+
+}  // namespace colza

@@ -1,0 +1,34 @@
+// Atomic result directories. Files are written into a hidden staging folder inside the
+// output directory and moved into place only when the whole run has succeeded, so a
+// failed or interrupted run never leaves half-written files nor replaces an earlier result.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace colza {
+
+class OutputStaging {
+ public:
+  // Throws ConfigError (key "--out") if `dir` already holds a result (a summary.json)
+  // and `overwrite` is false, or if it cannot be created.
+  OutputStaging(const std::filesystem::path& dir, bool overwrite);
+  ~OutputStaging();
+  OutputStaging(const OutputStaging&) = delete;
+  OutputStaging& operator=(const OutputStaging&) = delete;
+
+  // Where to write `name` now; it appears as dir/name after commit().
+  std::string path(const std::string& name);
+  void commit();
+  const std::filesystem::path& dir() const { return dir_; }
+
+ private:
+  std::filesystem::path dir_, staging_;
+  std::vector<std::string> files_;
+  bool created_dir_ = false, committed_ = false;
+};
+
+// Checks the output directory without creating anything (for early validation).
+void check_output_dir(const std::filesystem::path& dir, bool overwrite);
+
+}  // namespace colza

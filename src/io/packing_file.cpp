@@ -1,0 +1,44 @@
+#include "io/packing_file.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "config/config_error.hpp"
+
+namespace colza {
+
+std::vector<PackedSphere> read_packing(const std::string& file, const std::string& key) {
+  std::ifstream in(file);
+  if (!in) throw ConfigError(file, key, "packing file not found or unreadable");
+  std::vector<PackedSphere> spheres;
+  std::string line;
+  int line_no = 0;
+  while (std::getline(in, line)) {
+    ++line_no;
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    std::istringstream s(line);
+    PackedSphere p;
+    if (!(s >> p.position[0] >> p.position[1] >> p.position[2] >> p.radius))
+      throw ConfigError(file, key, "line " + std::to_string(line_no) + ": expected 'x y z r'");
+    if (!(p.radius > 0.0) || !p.position.allFinite())
+      throw ConfigError(file, key, "line " + std::to_string(line_no) + ": radius must be positive, values finite");
+    spheres.push_back(p);
+  }
+  return spheres;
+}
+
+void write_packing(const std::string& file, const ParticleArrays& particles) {
+  std::FILE* f = std::fopen(file.c_str(), "w");
+  if (!f) throw std::runtime_error("cannot write " + file);
+  std::fprintf(f, "# colza packing: x y z r (m), %zu spheres\n", particles.size());
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const Vec3& x = particles.position[i];
+    std::fprintf(f, "%.17g %.17g %.17g %.17g\n", x[0], x[1], x[2], particles.radius[i]);
+  }
+  if (std::fclose(f) != 0) throw std::runtime_error("cannot write " + file);
+}
+
+}  // namespace colza

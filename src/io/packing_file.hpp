@@ -1,0 +1,20 @@
+// Packing files: one sphere per line, "x y z r" in metres, written with 17 significant
+// digits so a packing read back is the same packing bit for bit. Lines starting with
+// '#' are comments.
+#pragma once
+#include <string>
+#include <vector>
+#include "core/particles.hpp"
+
+namespace colza {
+
+struct PackedSphere {
+  Vec3 position;
+  double radius;
+};
+
+// Throws ConfigError naming `file` and `key_for_errors` when missing or malformed.
+std::vector<PackedSphere> read_packing(const std::string& file, const std::string& key_for_errors);
+void write_packing(const std::string& file, const ParticleArrays& particles);
+
+}  // namespace colza

@@ -1,0 +1,107 @@
+#include "neighbour/neighbour_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace colza {
+
+bool NeighbourSearch::needs_rebuild(const ParticleArrays& particles, const std::vector<Wall>& walls) const {
+  if (!valid_ || position_at_build_.size() != particles.size() || wall_origin_at_build_.size() != walls.size())
+    return true;
+  const double limit2 = 0.25 * skin_ * skin_;
+  for (std::size_t w = 0; w < walls.size(); ++w)
+    if ((walls[w].origin - wall_origin_at_build_[w]).squaredNorm() > limit2) return true;
+  const std::size_t n = particles.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if ((particles.position[i] - position_at_build_[i]).squaredNorm() > limit2) return true;
+  return false;
+}
+
+void NeighbourSearch::build_particle_pairs(const ParticleArrays& particles, std::vector<Index>& first,
+                                           std::vector<Index>& second) {
+  const std::size_t n = particles.size();
+  if (n < 2) return;
+  // Grid over the particles' bounding box; a cell is at least one interaction range wide,
+  // so all partners of a particle are in its own or the 26 surrounding cells.
+  Vec3 lo = particles.position[0], hi = lo;
+  double r_max = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    lo = lo.cwiseMin(particles.position[i]);
+    hi = hi.cwiseMax(particles.position[i]);
+    r_max = std::max(r_max, particles.radius[i]);
+  }
+  const double cell = 2.0 * r_max + skin_;
+  int dims[3];
+  for (int d = 0; d < 3; ++d) dims[d] = std::max(1, static_cast<int>((hi[d] - lo[d]) / cell) + 1);
+  const std::size_t n_cells = static_cast<std::size_t>(dims[0]) * dims[1] * dims[2];
+  auto cell_coord = [&](const Vec3& x, int d) {
+    return std::min(dims[d] - 1, static_cast<int>((x[d] - lo[d]) / cell));
+  };
+  // Counting sort of particles into cells (order within a cell: increasing index).
+  particle_cell_.resize(n);
+  cell_start_.assign(n_cells + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3& x = particles.position[i];
+    const std::size_t c = (static_cast<std::size_t>(cell_coord(x, 2)) * dims[1] + cell_coord(x, 1)) * dims[0] +
+                          cell_coord(x, 0);
+    particle_cell_[i] = static_cast<Index>(c);
+    ++cell_start_[c + 1];
+  }
+  for (std::size_t c = 0; c < n_cells; ++c) cell_start_[c + 1] += cell_start_[c];
+  cell_particles_.resize(n);
+  {
+    std::vector<Index> fill(cell_start_.begin(), cell_start_.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) cell_particles_[fill[particle_cell_[i]]++] = static_cast<Index>(i);
+  }
+  std::vector<Index> partners;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3& xi = particles.position[i];
+    const double ri = particles.radius[i];
+    const int cx = cell_coord(xi, 0), cy = cell_coord(xi, 1), cz = cell_coord(xi, 2);
+    partners.clear();
+    for (int z = std::max(0, cz - 1); z <= std::min(dims[2] - 1, cz + 1); ++z)
+      for (int y = std::max(0, cy - 1); y <= std::min(dims[1] - 1, cy + 1); ++y)
+        for (int x = std::max(0, cx - 1); x <= std::min(dims[0] - 1, cx + 1); ++x) {
+          const std::size_t c = (static_cast<std::size_t>(z) * dims[1] + y) * dims[0] + x;
+          for (Index k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+            const Index j = cell_particles_[k];
+            if (j <= i) continue;
+            const double reach = ri + particles.radius[j] + skin_;
+            if ((particles.position[j] - xi).squaredNorm() < reach * reach) partners.push_back(j);
+          }
+        }
+    std::sort(partners.begin(), partners.end());
+    for (Index j : partners) {
+      first.push_back(static_cast<Index>(i));
+      second.push_back(j);
+    }
+  }
+}
+
+void NeighbourSearch::rebuild(const ParticleArrays& particles, const std::vector<Wall>& walls,
+                              ContactStore& contacts) {
+  std::vector<Index> first, second;
+  first.reserve(contacts.particle_pairs.size() + 16);
+  second.reserve(contacts.particle_pairs.size() + 16);
+  build_particle_pairs(particles, first, second);
+  contacts.adopt_particle_pairs(std::move(first), std::move(second));
+
+  std::vector<Index> wall_ids, wall_partners;
+  for (std::size_t w = 0; w < walls.size(); ++w)
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+      const WallContactGeometry g = wall_sphere_geometry(walls[w], particles.position[i], particles.radius[i]);
+      if (g.in_range && g.overlap > -skin_) {
+        wall_ids.push_back(static_cast<Index>(w));
+        wall_partners.push_back(static_cast<Index>(i));
+      }
+    }
+  contacts.adopt_wall_pairs(std::move(wall_ids), std::move(wall_partners));
+
+  position_at_build_ = particles.position;
+  wall_origin_at_build_.resize(walls.size());
+  for (std::size_t w = 0; w < walls.size(); ++w) wall_origin_at_build_[w] = walls[w].origin;
+  valid_ = true;
+  ++rebuilds_;
+}
+
+}  // namespace colza

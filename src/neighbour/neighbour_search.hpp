@@ -1,0 +1,37 @@
+// Linked-cell neighbour search with a Verlet skin.
+// Candidates: particle pairs with |x2 - x1| < R1 + R2 + skin, and sphere-wall pairs whose
+// gap is below the skin. The lists stay valid while every particle and every wall has
+// moved less than skin/2 since the last build (two bodies then closed the gap by < skin),
+// so rebuilds happen only when that is violated.
+#pragma once
+#include <vector>
+#include "contact/contact_store.hpp"
+#include "core/particles.hpp"
+#include "walls/wall.hpp"
+
+namespace colza {
+
+class NeighbourSearch {
+ public:
+  explicit NeighbourSearch(double skin = 0.0) : skin_(skin) {}
+
+  double skin() const { return skin_; }
+  bool needs_rebuild(const ParticleArrays& particles, const std::vector<Wall>& walls) const;
+  // Rebuild both candidate lists and carry contact history over.
+  void rebuild(const ParticleArrays& particles, const std::vector<Wall>& walls, ContactStore& contacts);
+  void invalidate() { valid_ = false; }
+  std::uint64_t rebuild_count() const { return rebuilds_; }
+
+ private:
+  void build_particle_pairs(const ParticleArrays& particles, std::vector<Index>& first,
+                            std::vector<Index>& second);
+  double skin_;
+  bool valid_ = false;
+  std::uint64_t rebuilds_ = 0;
+  std::vector<Vec3> position_at_build_;
+  std::vector<Vec3> wall_origin_at_build_;
+  // Scratch buffers of the cell grid (kept to avoid reallocation).
+  std::vector<Index> cell_start_, cell_particles_, particle_cell_;
+};
+
+}  // namespace colza

@@ -1,0 +1,75 @@
+#include "scenario/generation.hpp"
+
+#include <boost/random/mersenne_twister.hpp>
+#include <boost/random/uniform_real_distribution.hpp>
+#include <cmath>
+
+namespace colza {
+
+GenerationRegion GenerationRegion::box(const Vec3& lo, const Vec3& hi) {
+  GenerationRegion r;
+  r.shape = Shape::kBox;
+  r.lo = lo;
+  r.hi = hi;
+  return r;
+}
+
+GenerationRegion GenerationRegion::vertical_cylinder(const Vec3& base_centre, double radius, double height) {
+  GenerationRegion r;
+  r.shape = Shape::kCylinder;
+  r.axis_point = base_centre;
+  r.radius = radius;
+  r.lo = base_centre - Vec3(radius, radius, 0.0);
+  r.hi = base_centre + Vec3(radius, radius, height);
+  return r;
+}
+
+bool GenerationRegion::contains(const Vec3& x, double r) const {
+  if (x.z() - r < lo.z() || x.z() + r > hi.z()) return false;
+  if (shape == Shape::kBox)
+    return x.x() - r >= lo.x() && x.x() + r <= hi.x() && x.y() - r >= lo.y() && x.y() + r <= hi.y();
+  const double dx = x.x() - axis_point.x(), dy = x.y() - axis_point.y();
+  return radius >= r && dx * dx + dy * dy <= (radius - r) * (radius - r);
+}
+
+std::vector<PackedSphere> generate_spheres(const GenerationRequest& req) {
+  boost::random::mt19937_64 engine(req.seed);
+  boost::random::uniform_real_distribution<double> unit(0.0, 1.0);
+  const Vec3 lo = req.region.lo, span = req.region.hi - req.region.lo;
+  // Hash grid of placed spheres, cell = d_max, so overlaps are found in the 27 neighbouring cells.
+  const double cell = std::max(req.diameter_max, 1e-12);
+  int dims[3];
+  for (int d = 0; d < 3; ++d) dims[d] = std::max(1, static_cast<int>(std::ceil(span[d] / cell)));
+  std::vector<std::vector<std::uint32_t>> grid(static_cast<std::size_t>(dims[0]) * dims[1] * dims[2]);
+  auto coord = [&](const Vec3& x, int d) { return std::clamp(static_cast<int>((x[d] - lo[d]) / cell), 0, dims[d] - 1); };
+
+  std::vector<PackedSphere> placed;
+  placed.reserve(req.count);
+  std::uint64_t failures = 0;
+  while (placed.size() < req.count && failures < req.max_attempts) {
+    const double d = req.diameter_min + (req.diameter_max - req.diameter_min) * unit(engine);
+    const double r = 0.5 * d;
+    bool ok = false;
+    Vec3 x;
+    while (!ok && failures < req.max_attempts) {
+      x = Vec3(lo.x() + span.x() * unit(engine), lo.y() + span.y() * unit(engine), lo.z() + span.z() * unit(engine));
+      ok = req.region.contains(x, r);
+      const int cx = coord(x, 0), cy = coord(x, 1), cz = coord(x, 2);
+      for (int z = std::max(0, cz - 1); ok && z <= std::min(dims[2] - 1, cz + 1); ++z)
+        for (int y = std::max(0, cy - 1); ok && y <= std::min(dims[1] - 1, cy + 1); ++y)
+          for (int xx = std::max(0, cx - 1); ok && xx <= std::min(dims[0] - 1, cx + 1); ++xx)
+            for (std::uint32_t k : grid[(static_cast<std::size_t>(z) * dims[1] + y) * dims[0] + xx]) {
+              const double reach = r + placed[k].radius;
+              if ((placed[k].position - x).squaredNorm() < reach * reach) { ok = false; break; }
+            }
+      if (!ok) ++failures;
+    }
+    if (!ok) break;
+    grid[(static_cast<std::size_t>(coord(x, 2)) * dims[1] + coord(x, 1)) * dims[0] + coord(x, 0)].push_back(
+        static_cast<std::uint32_t>(placed.size()));
+    placed.push_back({x, r});
+  }
+  return placed;
+}
+
+}  // namespace colza

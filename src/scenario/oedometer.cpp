@@ -1,0 +1,126 @@
+#include "scenario/oedometer.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "scenario/generation.hpp"
+
+namespace colza {
+
+namespace {
+
+void build_container(World& world, const OedometerSpec& o) {
+  const double radius = 0.5 * o.cylinder_diameter;
+  world.walls.push_back(Wall::plane("bottom", Vec3::Zero(), Vec3::UnitZ()));
+  // The envelope reaches up through the whole generation volume (the paper generates in
+  // 100 mm x 200 mm and discards above the 80 mm rim after settling).
+  world.walls.push_back(Wall::cylinder("envelope", Vec3::Zero(), Vec3::UnitZ(), radius, 0.0,
+                                       std::max(o.generation_height, o.cylinder_height)));
+}
+
+void place_sample(World& world, const RunConfig& c) {
+  GenerationRequest req;
+  req.region = GenerationRegion::vertical_cylinder(Vec3::Zero(), 0.5 * c.oedometer.cylinder_diameter,
+                                                   c.oedometer.generation_height);
+  req.count = static_cast<std::size_t>(c.sample.count);
+  req.diameter_min = c.particle.diameter_min;
+  req.diameter_max = c.particle.diameter_max;
+  req.seed = c.seed;
+  req.max_attempts = static_cast<std::uint64_t>(c.sample.max_placement_attempts);
+  const std::vector<PackedSphere> spheres = generate_spheres(req);
+  if (spheres.size() < req.count)
+    throw ConfigError(c.source, "sample.count",
+                      "only " + std::to_string(spheres.size()) + " of " + std::to_string(req.count) +
+                          " spheres fit without overlap in the generation volume; lower sample.count or raise "
+                          "oedometer.generation_height");
+  for (const PackedSphere& s : spheres) world.particles.add(s.position, s.radius, c.particle.density);
+}
+
+double total_mass(const ParticleArrays& p) {
+  double m = 0.0;
+  for (double mi : p.mass) m += mi;
+  return m;
+}
+
+}  // namespace
+
+OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
+  OedometerResult r;
+  const OedometerSpec& o = c.oedometer;
+  Stepper stepper(make_physics(c));
+  World world;
+  build_container(world, o);
+
+  // --- preparation: generation and settling ---------------------------------------
+  StageClock prep_clock("settling");
+  place_sample(world, c);
+  r.particles_generated = world.particles.size();
+  stepper.prepare(world);
+  r.settling = settle(world, stepper, c.sample.settle_unbalanced_force, c.sample.settle_max_time,
+                      static_cast<std::uint64_t>(c.sample.settle_check_interval), progress);
+  prep_clock.count_steps(r.settling.steps, r.particles_generated);
+  if (c.contact.bond_install == BondInstallMoment::kAfterSettling) r.bonds_installed = install_bonds(world, c.contact.bond_gap);
+  discard_above(world, stepper, o.cylinder_height);
+  r.particles = world.particles.size();
+  r.stages.push_back(prep_clock.finish());
+  if (r.particles == 0)
+    throw ConfigError(c.source, "sample.count", "no sphere is left below the rim after settling");
+
+  // --- piston at the top of the packing ------------------------------------------
+  double top = 0.0;
+  for (std::size_t i = 0; i < world.particles.size(); ++i)
+    top = std::max(top, world.particles.position[i].z() + world.particles.radius[i]);
+  r.packing_height = top;
+  const double area = kPi * 0.25 * o.cylinder_diameter * o.cylinder_diameter;
+  r.bulk_density = total_mass(world.particles) / (area * top);
+  Wall piston = Wall::plane("piston", Vec3(0.0, 0.0, top), -Vec3::UnitZ());
+  piston.velocity = Vec3(0.0, 0.0, -o.piston_speed);
+  const std::size_t piston_id = world.walls.size();
+  world.walls.push_back(piston);
+  stepper.prepare(world);
+  if (c.contact.bond_install == BondInstallMoment::kBeforeLoading) r.bonds_installed = install_bonds(world, c.contact.bond_gap);
+  r.settled = world.particles;
+
+  // --- loading ----------------------------------------------------------------------
+  StageClock load_clock("loading");
+  progress.start_stage("loading");
+  const double t_start = world.time;
+  r.dt_min = r.dt_max = world.dt;
+  bool stop = false;
+  std::uint64_t load_steps = 0;
+  while (!stop) {
+    stepper.step(world, [&](const World& w) {
+      const Wall& p = w.walls[piston_id];
+      const double travel = top - p.origin.z();
+      const double force = p.force.z();  // particles push the piston up: compression positive
+      r.max_force = std::max(r.max_force, force);
+      if (force >= o.stop_force) r.stop_reason = "stop_force";
+      else if (travel >= o.max_piston_travel) r.stop_reason = "max_piston_travel";
+      stop = !r.stop_reason.empty();
+      if (load_steps % static_cast<std::uint64_t>(o.record_interval) == 0 || stop)
+        r.curve.add_row({w.time - t_start, travel, force,
+                         static_cast<double>(w.contacts.touching_particle_contacts() + w.contacts.touching_wall_contacts()),
+                         static_cast<double>(w.contacts.bonded_contacts())});
+      if (progress.active() && load_steps % 2000 == 0) {
+        char detail[96];
+        std::snprintf(detail, sizeof detail, "travel %.2f mm, piston force %.2f kN", 1e3 * travel, 1e-3 * force);
+        progress.update(std::max(force / o.stop_force, travel / o.max_piston_travel), detail);
+      }
+    });
+    ++load_steps;
+    r.dt_min = std::min(r.dt_min, world.dt);
+    r.dt_max = std::max(r.dt_max, world.dt);
+  }
+  progress.end_stage();
+  load_clock.count_steps(load_steps, world.particles.size());
+  r.stages.push_back(load_clock.finish());
+  r.steps = r.settling.steps + load_steps;
+  r.fit = fit_compression_curve(r.curve.column("piston_displacement"), r.curve.column("piston_force"),
+                                o.fit_force_min, o.fit_force_max);
+  r.final_state = world.particles;
+  r.bonds_broken_tension = stepper.events().bonds_broken_tension;
+  r.bonds_broken_shear = stepper.events().bonds_broken_shear;
+  return r;
+}
+
+}  // namespace colza

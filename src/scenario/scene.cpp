@@ -1,0 +1,81 @@
+#include "scenario/scene.hpp"
+
+#include "engine/stepper.hpp"
+#include "scenario/settling.hpp"
+
+namespace colza {
+
+std::vector<std::string> scene_columns(const std::vector<std::int64_t>& particles, std::size_t walls) {
+  std::vector<std::string> names{"step", "time"};
+  const char* axes[3] = {"x", "y", "z"};
+  for (std::int64_t k : particles) {
+    const std::string p = "p" + std::to_string(k) + "_";
+    for (const char* q : {"", "v", "w", "f", "t"})
+      for (const char* a : axes) names.push_back(p + q + a);
+  }
+  for (std::size_t w = 0; w < walls; ++w) {
+    const std::string p = "w" + std::to_string(w) + "_";
+    for (const char* q : {"f", ""})
+      for (const char* a : axes) names.push_back(p + q + a);
+  }
+  for (const char* e : {"contacts", "bonds", "kinetic_energy", "gravitational_energy", "elastic_normal_energy",
+                        "elastic_shear_energy", "slip_dissipated", "damping_dissipated", "bond_break_lost",
+                        "wall_work"})
+    names.push_back(e);
+  return names;
+}
+
+SceneResult run_scene(const RunConfig& c, Progress& progress) {
+  SceneResult r;
+  const SceneSpec& s = c.scene;
+  Stepper stepper(make_physics(c));
+  World world;
+  for (const SceneParticle& sp : s.particles) {
+    const Index i = world.particles.add(sp.position, sp.radius, c.particle.density, 0, sp.velocity, sp.angular_velocity);
+    world.particles.fixed[i] = sp.fixed ? 1 : 0;
+  }
+  world.walls = s.walls;
+  stepper.prepare(world);
+  if (c.contact.bond_install == BondInstallMoment::kAfterSettling ||
+      c.contact.bond_install == BondInstallMoment::kBeforeLoading)
+    r.bonds_installed = install_bonds(world, c.contact.bond_gap);
+  r.dt = world.dt;
+  r.series = Table(scene_columns(s.record_particles, world.walls.size()));
+
+  StageClock clock("scene");
+  progress.start_stage("scene");
+  const std::uint64_t total = static_cast<std::uint64_t>(s.steps);
+  std::vector<double> row;
+  for (std::uint64_t n = 0; n < total; ++n) {
+    stepper.step(world, [&](const World& w) {
+      if (n % static_cast<std::uint64_t>(s.record_interval) != 0 && n + 1 != total) return;
+      row.clear();
+      row.push_back(static_cast<double>(w.step));
+      row.push_back(w.time);
+      const ParticleArrays& p = w.particles;
+      for (std::int64_t k : s.record_particles)
+        for (const Vec3* v : {&p.position[k], &p.velocity[k], &p.angular_velocity[k], &p.force[k], &p.torque[k]})
+          row.insert(row.end(), v->data(), v->data() + 3);
+      for (const Wall& wall : w.walls) {
+        row.insert(row.end(), wall.force.data(), wall.force.data() + 3);
+        row.insert(row.end(), wall.origin.data(), wall.origin.data() + 3);
+      }
+      const EnergySnapshot e = stepper.energy(w);
+      const EnergyLedger& l = stepper.ledger();
+      row.insert(row.end(), {static_cast<double>(w.contacts.touching_particle_contacts() + w.contacts.touching_wall_contacts()),
+                             static_cast<double>(w.contacts.bonded_contacts()), e.kinetic, e.gravitational,
+                             e.elastic_normal, e.elastic_shear, l.slip_dissipated, l.damping_dissipated,
+                             l.bond_break_lost, l.wall_work});
+      r.series.add_row(row);
+    });
+    if (n % 1000 == 0) progress.update(static_cast<double>(n) / total, "");
+  }
+  progress.end_stage();
+  clock.count_steps(total, world.particles.size());
+  r.stages.push_back(clock.finish());
+  r.steps = total;
+  r.final_state = world.particles;
+  return r;
+}
+
+}  // namespace colza

@@ -1,0 +1,78 @@
+#include "scenario/settling.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace colza {
+
+SettleResult settle(World& world, Stepper& stepper, double threshold, double max_time,
+                    std::uint64_t check_interval, Progress& progress) {
+  SettleResult r;
+  const double t0 = world.time;
+  progress.start_stage("settling");
+  const double log_start = std::log10(std::max(threshold * 10.0, 1e-30));
+  while (true) {
+    stepper.step(world);
+    ++r.steps;
+    r.mean_unbalanced_force = stepper.last_integration().mean_unbalanced_force;
+    if (r.steps % check_interval == 0) {
+      if (r.mean_unbalanced_force < threshold) {
+        r.converged = true;
+        break;
+      }
+      if (world.time - t0 >= max_time) break;
+      if (progress.active()) {
+        // Progress on a log scale of the unbalanced force, from 10x the threshold down to it.
+        const double f = std::clamp((log_start - std::log10(r.mean_unbalanced_force)) / 1.0, 0.0, 1.0);
+        char detail[96];
+        std::snprintf(detail, sizeof detail, "t = %.3f s, mean unbalanced force %.2e N (target %.1e)",
+                      world.time - t0, r.mean_unbalanced_force, threshold);
+        progress.update(f > 0.0 ? f : -1.0, detail);
+      }
+    }
+  }
+  progress.end_stage();
+  r.simulated_time = world.time - t0;
+  return r;
+}
+
+std::size_t discard_above(World& world, Stepper& stepper, double z_top) {
+  ParticleArrays& p = world.particles;
+  std::vector<std::uint8_t> keep(p.size(), 1);
+  std::size_t removed = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.position[i].z() + p.radius[i] > z_top) {
+      keep[i] = 0;
+      ++removed;
+    }
+  const std::vector<Index> old_to_new = p.compact(keep);
+  world.contacts.renumber_particles(old_to_new);
+  stepper.invalidate_neighbours();
+  return removed;
+}
+
+std::size_t install_bonds(World& world, double gap) {
+  const ParticleArrays& p = world.particles;
+  auto& pairs = world.contacts.particle_pairs;
+  std::size_t installed = 0;
+  for (std::size_t c = 0; c < pairs.size(); ++c) {
+    const Index i = pairs.first[c], j = pairs.second[c];
+    const Vec3 d = p.position[j] - p.position[i];
+    const double dist = d.norm();
+    const double overlap = p.radius[i] + p.radius[j] - dist;
+    if (overlap < -gap) continue;
+    ContactHistory& h = pairs.history[c];
+    if (!h.touching) {  // a pair within the gap tolerance becomes a (bonded) contact now
+      h.reset();
+      h.touching = 1;
+      h.normal = d / dist;
+    }
+    if (!h.bonded) {
+      h.bonded = 1;
+      ++installed;
+    }
+  }
+  return installed;
+}
+
+}  // namespace colza

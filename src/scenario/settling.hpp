@@ -1,0 +1,31 @@
+// Sample preparation steps shared by the oedometer and the shear box:
+// settling under gravity to a mean unbalanced force, discarding spheres above a rim,
+// and installing contact bonds at a chosen moment.
+#pragma once
+#include "engine/stepper.hpp"
+#include "io/progress.hpp"
+
+namespace colza {
+
+struct SettleResult {
+  bool converged = false;
+  std::uint64_t steps = 0;
+  double simulated_time = 0.0;         // s
+  double mean_unbalanced_force = 0.0;  // N, at the end
+};
+
+// Runs until the mean unbalanced force per particle (|F_contact + m g|, mean over free
+// particles; PFC's measure) falls below `threshold`, checked every `check_interval` steps,
+// or until `max_time` of simulated time has passed.
+SettleResult settle(World& world, Stepper& stepper, double threshold, double max_time,
+                    std::uint64_t check_interval, Progress& progress);
+
+// Removes the spheres whose top (z + r) lies above `z_top`; their contacts go with them.
+// Returns the number removed.
+std::size_t discard_above(World& world, Stepper& stepper, double z_top);
+
+// Puts a contact bond on every particle-particle pair touching now (un >= -gap).
+// Returns the number of bonds installed.
+std::size_t install_bonds(World& world, double gap);
+
+}  // namespace colza

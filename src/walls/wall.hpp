@@ -1,0 +1,55 @@
+// Kinematic walls (physics.md section 1): never integrated; they translate with a
+// prescribed velocity (or one set each step by a servo). Three shapes:
+//   plane     - infinite, one-sided: `normal` points into the particle side;
+//   cylinder  - inner surface of a circular cylinder (oedometer envelope), finite along its axis;
+//   rectangle - finite, two-sided plate (shear-box faces, rims, plates); its edges and
+//               corners are part of the surface, so spheres can touch them.
+#pragma once
+#include <string>
+#include <vector>
+#include "core/types.hpp"
+
+namespace colza {
+
+enum class WallShape { kPlane, kCylinder, kRectangle };
+const char* to_string(WallShape shape);
+
+struct Wall {
+  std::string name;
+  WallShape shape = WallShape::kPlane;
+  Vec3 origin = Vec3::Zero();   // plane: a point on it; cylinder: a point on the axis; rectangle: centre
+  Vec3 normal = Vec3::UnitZ();  // plane/rectangle: unit normal; cylinder: unit axis direction
+  Vec3 axis_u = Vec3::UnitX();  // rectangle: unit in-plane axes (orthogonal to normal)
+  Vec3 axis_v = Vec3::UnitY();
+  double half_u = 0.0, half_v = 0.0;          // rectangle half extents (m)
+  double radius = 0.0;                         // cylinder inner radius (m)
+  double axial_min = 0.0, axial_max = 0.0;     // cylinder extent along its axis from origin (m)
+  Vec3 velocity = Vec3::Zero();                // m/s
+  std::uint16_t material = 0;                  // index into the wall material table
+
+  // Filled by the force computation each step: total contact force exerted BY the
+  // particles ON this wall (N), and its contact count.
+  Vec3 force = Vec3::Zero();
+  Index contact_count = 0;
+
+  static Wall plane(std::string name, const Vec3& point, const Vec3& normal);
+  static Wall cylinder(std::string name, const Vec3& axis_point, const Vec3& axis, double radius,
+                       double axial_min, double axial_max);
+  // Rectangle with centre, unit normal, in-plane axis u (v = normal x u) and half extents.
+  static Wall rectangle(std::string name, const Vec3& centre, const Vec3& normal, const Vec3& axis_u,
+                        double half_u, double half_v);
+};
+
+// Geometry of a sphere touching a wall. The wall is body 1: `normal` points from the
+// wall into the sphere, overlap = R - distance(centre, wall surface), and the contact
+// point is the middle of the overlap: c = x - (R - overlap/2) normal.
+struct WallContactGeometry {
+  bool in_range = false;  // false: the sphere cannot touch this wall (e.g. beyond a cylinder's ends)
+  double overlap = 0.0;
+  Vec3 normal = Vec3::UnitZ();
+  Vec3 point = Vec3::Zero();
+};
+
+WallContactGeometry wall_sphere_geometry(const Wall& wall, const Vec3& centre, double radius);
+
+}  // namespace colza
