@@ -75,7 +75,17 @@ OedometerSpec read_oedometer(const ConfigNode& t, const ParticleSpec& particle) 
   if (o.cylinder_diameter <= particle.diameter_max)
     t.fail("cylinder_diameter", "must exceed particle.diameter_max");
   if (o.generation_height < o.cylinder_height) t.fail("generation_height", "must be at least oedometer.cylinder_height");
+  o.packing_file = t.string("packing_file", "");
   return o;
+}
+
+// A relative path in the config file is relative to the file's folder; one given with
+// --set is relative to the working directory.
+std::string resolve_input_path(const ConfigReader& reader, const std::string& full_key, const std::string& value) {
+  std::filesystem::path file(value);
+  if (file.is_relative() && reader.origin_of(full_key).rfind("--set", 0) != 0)
+    file = std::filesystem::path(reader.source_name()).parent_path() / file;
+  return file.string();
 }
 
 Wall read_scene_wall(const ConfigNode& t) {
@@ -122,11 +132,8 @@ SceneSpec read_scene(const ConfigNode& t, const ConfigReader& reader) {
     s.particles.push_back(sp);
   }
   if (!s.packing_file.empty()) {
-    std::filesystem::path file(s.packing_file);
-    const std::string origin = reader.origin_of(t.path() + ".packing_file");
-    if (file.is_relative() && origin.rfind("--set", 0) != 0)
-      file = std::filesystem::path(reader.source_name()).parent_path() / file;
-    for (const PackedSphere& ps : read_packing(file.string(), t.path() + ".packing_file")) {
+    const std::string key = t.path() + ".packing_file";
+    for (const PackedSphere& ps : read_packing(resolve_input_path(reader, key, s.packing_file), key)) {
       SceneParticle sp;
       sp.position = ps.position;
       sp.radius = ps.radius;
@@ -163,6 +170,10 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
   if (scenario == Scenario::kOedometer) {
     c.sample = read_sample(root.table("sample"));
     c.oedometer = read_oedometer(root.table("oedometer"), c.particle);
+    if (!c.oedometer.packing_file.empty()) {
+      c.oedometer.packing_file = resolve_input_path(reader, "oedometer.packing_file", c.oedometer.packing_file);
+      read_packing(c.oedometer.packing_file, "oedometer.packing_file");  // fail early if missing or malformed
+    }
   } else {
     c.scene = read_scene(root.table("scene"), reader);
     if (c.integration.automatic_time_step && !root.table("integration").has("time_step"))

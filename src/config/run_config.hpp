@@ -54,6 +54,10 @@ struct OedometerSpec {                // [oedometer]
   std::int64_t record_interval = 50;  // steps between curve samples
   double fit_force_min = 150.0;       // N, displacement zeroed here; fit range start
   double fit_force_max = 29.3e3;      // N, fit range end (paper logs 150 N - 29.3 kN)
+  // Optional settled packing ("x y z r" per line, e.g. a previous run's packing.txt): when
+  // given, generation and settling are skipped and loading starts from it at rest. This is
+  // how colza and YADE start from the identical sample in the cross-check.
+  std::string packing_file;
 };
 
 struct SceneParticle {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "io/packing_file.hpp"
 #include "scenario/generation.hpp"
 
 namespace colza {
@@ -53,12 +54,20 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
 
   // --- preparation: generation and settling ---------------------------------------
   StageClock prep_clock("settling");
-  place_sample(world, c);
-  r.particles_generated = world.particles.size();
-  stepper.prepare(world);
-  r.settling = settle(world, stepper, c.sample.settle_unbalanced_force, c.sample.settle_max_time,
-                      static_cast<std::uint64_t>(c.sample.settle_check_interval), progress);
-  prep_clock.count_steps(r.settling.steps, r.particles_generated);
+  if (o.packing_file.empty()) {
+    place_sample(world, c);
+    r.particles_generated = world.particles.size();
+    stepper.prepare(world);
+    r.settling = settle(world, stepper, c.sample.settle_unbalanced_force, c.sample.settle_max_time,
+                        static_cast<std::uint64_t>(c.sample.settle_check_interval), progress);
+    prep_clock.count_steps(r.settling.steps, r.particles_generated);
+  } else {  // start from a settled packing, at rest
+    for (const PackedSphere& s : read_packing(o.packing_file, "oedometer.packing_file"))
+      world.particles.add(s.position, s.radius, c.particle.density);
+    r.particles_generated = world.particles.size();
+    r.settling.converged = true;
+    stepper.prepare(world);
+  }
   if (c.contact.bond_install == BondInstallMoment::kAfterSettling) r.bonds_installed = install_bonds(world, c.contact.bond_gap);
   discard_above(world, stepper, o.cylinder_height);
   r.particles = world.particles.size();
