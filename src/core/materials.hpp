@@ -1,5 +1,6 @@
 // Entity properties and how they combine into contact parameters (physics.md section 2).
 #pragma once
+#include <cassert>
 #include <string>
 #include <vector>
 #include "core/types.hpp"
@@ -49,10 +50,13 @@ class PairTable {
   PairTable() = default;
   PairTable(const std::vector<ParticleMaterial>& particles, const std::vector<WallMaterial>& walls,
             StiffnessRule rule);
+  // Arguments are MATERIAL indices (ParticleArrays::material, Wall::material), not body indices.
   const PairParameters& particle_particle(std::size_t a, std::size_t b) const {
+    assert(a < n_particle_ && b < n_particle_);
     return pp_[a * n_particle_ + b];
   }
   const PairParameters& particle_wall(std::size_t p, std::size_t w) const {
+    assert(p < n_particle_ && w < n_wall_);
     return pw_[p * n_wall_ + w];
   }
   StiffnessRule rule() const { return rule_; }

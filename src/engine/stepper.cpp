@@ -20,7 +20,7 @@ void Stepper::prepare(World& world) {
 
 void Stepper::update_time_step(World& world) {
   world.dt = physics_.time_step.automatic
-                 ? physics_.time_step.safety_factor * critical_time_step(world.particles, world.contacts, pairs_)
+                 ? physics_.time_step.safety_factor * critical_time_step(world.particles, world.walls, world.contacts, pairs_)
                  : physics_.time_step.fixed_dt;
 }
 

@@ -5,7 +5,8 @@
 
 namespace colza {
 
-double critical_time_step(const ParticleArrays& p, const ContactStore& contacts, const PairTable& pairs) {
+double critical_time_step(const ParticleArrays& p, const std::vector<Wall>& walls, const ContactStore& contacts,
+                          const PairTable& pairs) {
   const std::size_t n = p.size();
   std::vector<double> k_trans(n, 0.0), k_shear(n, 0.0);
   const auto& pp = contacts.particle_pairs;
@@ -22,7 +23,7 @@ double critical_time_step(const ParticleArrays& p, const ContactStore& contacts,
   for (std::size_t c = 0; c < pw.size(); ++c) {
     if (!pw.history[c].touching) continue;
     const Index i = pw.particle[c];
-    const PairParameters& q = pairs.particle_wall(p.material[i], pw.wall[c]);
+    const PairParameters& q = pairs.particle_wall(p.material[i], walls[pw.wall[c]].material);
     k_trans[i] += q.kn + q.ks;
     k_shear[i] += q.ks;
   }

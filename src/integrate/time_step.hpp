@@ -20,7 +20,8 @@ struct TimeStepSettings {
   std::uint64_t recompute_interval = 100;  // steps between re-evaluations
 };
 
-double critical_time_step(const ParticleArrays& particles, const ContactStore& contacts,
-                          const PairTable& pairs);
+// Returns min_i min(sqrt(m_i / k_i), sqrt(I_i / kr_i)) (s), without the safety factor.
+double critical_time_step(const ParticleArrays& particles, const std::vector<Wall>& walls,
+                          const ContactStore& contacts, const PairTable& pairs);
 
 }  // namespace colza

@@ -112,7 +112,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
                          static_cast<double>(w.contacts.bonded_contacts())});
       if (progress.active() && load_steps % 2000 == 0) {
         char detail[96];
-        std::snprintf(detail, sizeof detail, "travel %.2f mm, piston force %.2f kN", 1e3 * travel, 1e-3 * force);
+        std::snprintf(detail, sizeof detail, "travel %.2f mm, piston force %.2f kN, dt %.3g s", 1e3 * travel, 1e-3 * force, w.dt);
         progress.update(std::max(force / o.stop_force, travel / o.max_piston_travel), detail);
       }
     });

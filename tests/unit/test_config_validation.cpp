@@ -1,0 +1,258 @@
+// Configuration validation (config/run_config.hpp, config/config_reader.hpp): every bad input
+// is a ConfigError naming the key; the shipped data/oedometer.toml states exactly the built-in
+// defaults.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+#include "config/run_config.hpp"
+
+using namespace colza;
+
+namespace {
+
+// Runs `f`, expects a ConfigError and returns it.
+template <class F>
+ConfigError expect_config_error(F&& f) {
+  try {
+    f();
+  } catch (const ConfigError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "expected a ConfigError";
+  return ConfigError("", "", "");
+}
+
+ConfigError oedometer_error(const std::string& toml) {
+  return expect_config_error([&] {
+    read_run_config(Scenario::kOedometer, ConfigReader::from_string(toml, "test.toml"));
+  });
+}
+
+// A temporary directory removed at the end of the test.
+struct TempDir {
+  std::filesystem::path path;
+  TempDir() {
+    path = std::filesystem::temp_directory_path() /
+           ("colza_unit_config_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(path);
+  }
+  ~TempDir() { std::filesystem::remove_all(path); }
+  std::string write(const std::string& name, const std::string& text) const {
+    const auto file = path / name;
+    std::ofstream(file) << text;
+    return file.string();
+  }
+};
+
+}  // namespace
+
+TEST(ConfigValidation, UnknownKeyIsNamed) {
+  const ConfigError e = oedometer_error("[particle]\ndensty = 1250.0\n");
+  EXPECT_EQ(e.key(), "particle.densty");
+  EXPECT_EQ(e.file(), "test.toml");
+  // An unknown top-level table too.
+  EXPECT_EQ(oedometer_error("[partcle]\ndensity = 1.0\n").key(), "partcle.density");
+}
+
+TEST(ConfigValidation, WrongTypeIsNamed) {
+  const ConfigError e = oedometer_error("[particle]\ndensity = \"heavy\"\n");
+  EXPECT_EQ(e.key(), "particle.density");
+  EXPECT_NE(e.reason().find("number"), std::string::npos) << e.reason();
+  // A table where a number is expected and vice versa.
+  EXPECT_EQ(oedometer_error("particle = 3\n").key(), "particle");
+  EXPECT_EQ(oedometer_error("[sample]\ncount = 2.5\n").key(), "sample.count");
+}
+
+TEST(ConfigValidation, NegativeStiffnessIsNamed) {
+  EXPECT_EQ(oedometer_error("[particle]\nnormal_stiffness = -437e3\n").key(), "particle.normal_stiffness");
+  EXPECT_EQ(oedometer_error("[wall]\nshear_stiffness = 0.0\n").key(), "wall.shear_stiffness");
+  EXPECT_EQ(oedometer_error("[wall]\nfriction = -0.1\n").key(), "wall.friction");
+}
+
+TEST(ConfigValidation, DiameterOrder) {
+  const ConfigError e = oedometer_error("[particle]\ndiameter_min = 0.008\ndiameter_max = 0.007\n");
+  EXPECT_EQ(e.key(), "particle.diameter_min");
+  // Equal diameters are allowed (monodisperse).
+  EXPECT_NO_THROW(read_run_config(Scenario::kOedometer,
+                                  ConfigReader::from_string("[particle]\ndiameter_min = 0.007\ndiameter_max = 0.007\n",
+                                                            "test.toml")));
+}
+
+TEST(ConfigValidation, OtherRangeAndChoiceErrors) {
+  EXPECT_EQ(oedometer_error("[integration]\ndamping = 1.5\n").key(), "integration.damping");
+  EXPECT_EQ(oedometer_error("[integration]\ndamping_form = \"viscous\"\n").key(), "integration.damping_form");
+  EXPECT_EQ(oedometer_error("[integration]\ntime_step = \"fast\"\n").key(), "integration.time_step");
+  EXPECT_EQ(oedometer_error("[integration]\ntime_step = -1e-6\n").key(), "integration.time_step");
+  EXPECT_EQ(oedometer_error("[integration]\ngravity = [0.0, -9.81]\n").key(), "integration.gravity");
+  EXPECT_EQ(oedometer_error("[contact]\nstiffness_rule = \"parallel\"\n").key(), "contact.stiffness_rule");
+  EXPECT_EQ(oedometer_error("[contact]\nbond = \"glue\"\n").key(), "contact.bond");
+  EXPECT_EQ(oedometer_error("[contact.contact_bond]\nnormal_strength = -1.0\n[contact]\nbond = \"contact_bond\"\n").key(),
+            "contact.contact_bond.normal_strength");
+  EXPECT_EQ(oedometer_error("scenario = \"scene\"\n").key(), "scenario");
+  EXPECT_EQ(oedometer_error("[oedometer]\nfit_force_min = 3e4\nfit_force_max = 2e4\n").key(), "oedometer.fit_force_min");
+  // TOML syntax error: no key, the reason names the line.
+  const ConfigError e = oedometer_error("[particle]\ndensity = = 3\n");
+  EXPECT_EQ(e.key(), "");
+  EXPECT_NE(e.reason().find("line 2"), std::string::npos) << e.reason();
+}
+
+TEST(ConfigValidation, MissingPackingFileOfASceneIsNamed) {
+  TempDir dir;
+  const std::string cfg = dir.write("scene.toml",
+                                    "scenario = \"scene\"\n"
+                                    "[integration]\ntime_step = 1e-6\n"
+                                    "[scene]\nsteps = 10\npacking_file = \"no_such_packing.txt\"\n");
+  const ConfigError e = expect_config_error([&] { load_run_config(Scenario::kScene, cfg, {}); });
+  EXPECT_EQ(e.key(), "scene.packing_file");
+  // The relative path is resolved next to the config file.
+  EXPECT_EQ(std::filesystem::path(e.file()), dir.path / "no_such_packing.txt");
+
+  // With the file present the scene reads it ("x y z r" per line).
+  dir.write("no_such_packing.txt", "# x y z r\n0.0 0.0 0.01 0.003\n0.0 0.0 0.02 0.0035\n");
+  const RunConfig c = load_run_config(Scenario::kScene, cfg, {});
+  ASSERT_EQ(c.scene.particles.size(), 2u);
+  EXPECT_EQ(c.scene.particles[1].radius, 0.0035);
+  EXPECT_EQ(c.integration.time_step, 1e-6);
+  EXPECT_FALSE(c.integration.automatic_time_step);
+}
+
+TEST(ConfigValidation, SceneNeedsAnExplicitTimeStep) {
+  const ConfigError e = expect_config_error([&] {
+    read_run_config(Scenario::kScene, ConfigReader::from_string("[scene]\nsteps = 10\n", "s.toml"));
+  });
+  EXPECT_EQ(e.key(), "integration.time_step");
+}
+
+TEST(ConfigValidation, OverrideErrorsNameSet) {
+  // Malformed assignment.
+  const ConfigError a = expect_config_error([] { load_run_config(Scenario::kOedometer, "", {"particle.density"}); });
+  EXPECT_EQ(a.file(), "--set");
+  // A bad value given on the command line: the error's origin is the override.
+  const ConfigError b = expect_config_error([] { load_run_config(Scenario::kOedometer, "", {"particle.density=-5"}); });
+  EXPECT_EQ(b.key(), "particle.density");
+  EXPECT_EQ(b.file().rfind("--set", 0), 0u) << b.file();
+  // A misspelt key on the command line.
+  const ConfigError c = expect_config_error([] { load_run_config(Scenario::kOedometer, "", {"particle.densty=1250"}); });
+  EXPECT_EQ(c.key(), "particle.densty");
+  EXPECT_EQ(c.file().rfind("--set", 0), 0u) << c.file();
+  // Overriding through a non-table.
+  const ConfigError d =
+      expect_config_error([] { load_run_config(Scenario::kOedometer, "", {"seed=3", "seed.x=1"}); });
+  EXPECT_EQ(d.file(), "--set");
+  // A valid override is applied.
+  EXPECT_EQ(load_run_config(Scenario::kOedometer, "", {"particle.density=1230"}).particle.density, 1230.0);
+  EXPECT_EQ(load_run_config(Scenario::kOedometer, "", {"integration.damping_form=yade"}).integration.damping_form,
+            DampingForm::kYade);
+}
+
+TEST(ConfigValidation, MissingConfigFile) {
+  const ConfigError e =
+      expect_config_error([] { load_run_config(Scenario::kOedometer, "/nonexistent/colza/cfg.toml", {}); });
+  EXPECT_EQ(e.file(), "/nonexistent/colza/cfg.toml");
+}
+
+// ---- data/oedometer.toml == built-in defaults ---------------------------------------
+
+namespace {
+
+void expect_same_numbers(const RunConfig& a, const RunConfig& b, const std::string& what) {
+  SCOPED_TRACE(what);
+  EXPECT_EQ(a.seed, b.seed);
+  EXPECT_EQ(a.particle.density, b.particle.density);
+  EXPECT_EQ(a.particle.normal_stiffness, b.particle.normal_stiffness);
+  EXPECT_EQ(a.particle.shear_stiffness, b.particle.shear_stiffness);
+  EXPECT_EQ(a.particle.friction, b.particle.friction);
+  EXPECT_EQ(a.particle.diameter_min, b.particle.diameter_min);
+  EXPECT_EQ(a.particle.diameter_max, b.particle.diameter_max);
+  EXPECT_EQ(a.wall.normal_stiffness, b.wall.normal_stiffness);
+  EXPECT_EQ(a.wall.shear_stiffness, b.wall.shear_stiffness);
+  EXPECT_EQ(a.wall.friction, b.wall.friction);
+  EXPECT_EQ(a.stiffness_rule, b.stiffness_rule);
+  EXPECT_EQ(a.contact.normal.index(), b.contact.normal.index());
+  EXPECT_EQ(a.contact.tangential.index(), b.contact.tangential.index());
+  EXPECT_EQ(a.contact.bond.index(), b.contact.bond.index());
+  EXPECT_EQ(a.contact.bond_install, b.contact.bond_install);
+  EXPECT_EQ(a.contact.bond_gap, b.contact.bond_gap);
+  EXPECT_EQ(a.integration.damping, b.integration.damping);
+  EXPECT_EQ(a.integration.damping_form, b.integration.damping_form);
+  EXPECT_EQ(a.integration.gravity, b.integration.gravity);
+  EXPECT_EQ(a.integration.automatic_time_step, b.integration.automatic_time_step);
+  EXPECT_EQ(a.integration.time_step, b.integration.time_step);
+  EXPECT_EQ(a.integration.safety_factor, b.integration.safety_factor);
+  EXPECT_EQ(a.integration.recompute_interval, b.integration.recompute_interval);
+  EXPECT_EQ(a.integration.verlet_skin, b.integration.verlet_skin);
+  EXPECT_EQ(a.sample.count, b.sample.count);
+  EXPECT_EQ(a.sample.settle_unbalanced_force, b.sample.settle_unbalanced_force);
+  EXPECT_EQ(a.sample.settle_max_time, b.sample.settle_max_time);
+  EXPECT_EQ(a.sample.settle_check_interval, b.sample.settle_check_interval);
+  EXPECT_EQ(a.sample.max_placement_attempts, b.sample.max_placement_attempts);
+  EXPECT_EQ(a.oedometer.cylinder_diameter, b.oedometer.cylinder_diameter);
+  EXPECT_EQ(a.oedometer.cylinder_height, b.oedometer.cylinder_height);
+  EXPECT_EQ(a.oedometer.generation_height, b.oedometer.generation_height);
+  EXPECT_EQ(a.oedometer.piston_speed, b.oedometer.piston_speed);
+  EXPECT_EQ(a.oedometer.stop_force, b.oedometer.stop_force);
+  EXPECT_EQ(a.oedometer.max_piston_travel, b.oedometer.max_piston_travel);
+  EXPECT_EQ(a.oedometer.record_interval, b.oedometer.record_interval);
+  EXPECT_EQ(a.oedometer.fit_force_min, b.oedometer.fit_force_min);
+  EXPECT_EQ(a.oedometer.fit_force_max, b.oedometer.fit_force_max);
+}
+
+}  // namespace
+
+TEST(ConfigDefaults, DataFileEqualsBuiltInDefaults) {
+  const std::string file = std::string(COLZA_SOURCE_DIR) + "/data/oedometer.toml";
+  const RunConfig from_file = load_run_config(Scenario::kOedometer, file, {});
+  const RunConfig builtin = load_run_config(Scenario::kOedometer, "", {});
+  const RunConfig member_defaults{};
+  expect_same_numbers(from_file, builtin, "data/oedometer.toml vs load_run_config(\"\")");
+  expect_same_numbers(from_file, member_defaults, "data/oedometer.toml vs RunConfig{}");
+}
+
+TEST(ConfigDefaults, DefaultsAreThePapersTable1) {
+  // physics.md section 5, Table 1 column, and section 4 (oedometer geometry and speed).
+  const RunConfig c = load_run_config(Scenario::kOedometer, "", {});
+  EXPECT_EQ(c.particle.density, 1250.0);
+  EXPECT_EQ(c.particle.normal_stiffness, 437e3);
+  EXPECT_EQ(c.particle.shear_stiffness, 100e3);
+  EXPECT_EQ(c.particle.friction, 0.20);
+  EXPECT_EQ(c.particle.diameter_min, 6e-3);
+  EXPECT_EQ(c.particle.diameter_max, 7e-3);
+  EXPECT_EQ(c.wall.normal_stiffness, 4000e3);
+  EXPECT_EQ(c.wall.shear_stiffness, 1000e3);
+  EXPECT_EQ(c.wall.friction, 0.23);
+  EXPECT_EQ(c.integration.damping, 0.7);
+  EXPECT_EQ(c.stiffness_rule, StiffnessRule::kSeries);
+  EXPECT_TRUE(std::holds_alternative<NoBond>(c.contact.bond));
+  EXPECT_EQ(c.oedometer.cylinder_diameter, 0.100);
+  EXPECT_EQ(c.oedometer.cylinder_height, 0.080);
+  EXPECT_EQ(c.oedometer.generation_height, 0.200);
+  // 500 mm/min = 0.5 m / 60 s.
+  EXPECT_NEAR(c.oedometer.piston_speed, 0.5 / 60.0, 1e-18);
+  EXPECT_EQ(c.oedometer.fit_force_min, 150.0);
+  EXPECT_EQ(c.oedometer.fit_force_max, 29.3e3);
+  EXPECT_EQ(c.sample.settle_unbalanced_force, 1e-4);
+  EXPECT_EQ(c.integration.gravity, Vec3(0.0, 0.0, -9.81));
+}
+
+TEST(ConfigDefaults, MakePhysicsCarriesTheNumbers) {
+  RunConfig c = load_run_config(Scenario::kOedometer, "",
+                                {"integration.time_step=2e-6", "contact.bond=contact_bond",
+                                 "contact.contact_bond.normal_strength=1.1", "contact.contact_bond.shear_strength=3.2"});
+  const PhysicsSettings ph = make_physics(c);
+  ASSERT_EQ(ph.particle_materials.size(), 1u);
+  ASSERT_EQ(ph.wall_materials.size(), 1u);
+  EXPECT_EQ(ph.particle_materials[0].kn, 437e3);
+  EXPECT_EQ(ph.wall_materials[0].friction, 0.23);
+  EXPECT_FALSE(ph.time_step.automatic);
+  EXPECT_EQ(ph.time_step.fixed_dt, 2e-6);
+  ASSERT_TRUE(std::holds_alternative<ContactBond>(ph.model.bond));
+  EXPECT_EQ(std::get<ContactBond>(ph.model.bond).normal_strength, 1.1);
+  EXPECT_EQ(std::get<ContactBond>(ph.model.bond).shear_strength, 3.2);
+  EXPECT_EQ(ph.model.bond_install, BondInstallMoment::kBeforeLoading);
+  EXPECT_EQ(ph.skin, 0.5e-3);
+}

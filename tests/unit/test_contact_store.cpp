@@ -1,0 +1,181 @@
+// Contact history kept by pair across neighbour-list rebuilds and particle removal
+// (contact/contact_store.hpp), and bond installation (scenario/settling.hpp).
+#include <gtest/gtest.h>
+
+#include "contact/contact_store.hpp"
+#include "core/particles.hpp"
+#include "engine/stepper.hpp"
+#include "scenario/settling.hpp"
+
+using namespace colza;
+
+namespace {
+
+ContactHistory touching(double fs_x, bool bonded = false) {
+  ContactHistory h;
+  h.touching = 1;
+  h.bonded = bonded ? 1 : 0;
+  h.shear_force = Vec3(fs_x, 0.5 * fs_x, 0.0);
+  h.normal = Vec3::UnitZ();
+  h.normal_force = 10.0 * fs_x;
+  return h;
+}
+
+void set_pairs(ParticlePairList& l, std::vector<Index> a, std::vector<Index> b, std::vector<ContactHistory> h) {
+  l.first = std::move(a);
+  l.second = std::move(b);
+  l.history = std::move(h);
+}
+
+bool same(const ContactHistory& a, const ContactHistory& b) {
+  return a.shear_force == b.shear_force && a.normal == b.normal && a.normal_force == b.normal_force &&
+         a.touching == b.touching && a.bonded == b.bonded;
+}
+
+}  // namespace
+
+TEST(ContactStore, AdoptKeepsSurvivorsDropsVanishedKeepsBonded) {
+  ContactStore s;
+  // Old list: (0,1) touching, (0,2) touching unbonded, (1,2) bonded, (2,5) candidate only.
+  set_pairs(s.particle_pairs, {0, 0, 1, 2}, {1, 2, 2, 5},
+            {touching(1.0), touching(2.0), touching(3.0, true), ContactHistory{}});
+  // New list: (0,1) survives, (1,3) and (2,5) present, (0,2) and (1,2) missing.
+  s.adopt_particle_pairs({0, 1, 2}, {1, 3, 5});
+  const auto& l = s.particle_pairs;
+  // Expected, sorted by (first, second): (0,1) with its history, (1,2) kept because bonded,
+  // (1,3) fresh, (2,5) with its (empty) history; (0,2) dropped (vanished, unbonded).
+  ASSERT_EQ(l.size(), 4u);
+  EXPECT_EQ(l.first, (std::vector<Index>{0, 1, 1, 2}));
+  EXPECT_EQ(l.second, (std::vector<Index>{1, 2, 3, 5}));
+  EXPECT_TRUE(same(l.history[0], touching(1.0)));
+  EXPECT_TRUE(same(l.history[1], touching(3.0, true)));
+  EXPECT_TRUE(same(l.history[2], ContactHistory{}));
+  EXPECT_TRUE(same(l.history[3], ContactHistory{}));
+  EXPECT_EQ(s.touching_particle_contacts(), 2u);
+  EXPECT_EQ(s.bonded_contacts(), 1u);
+}
+
+TEST(ContactStore, AdoptIntoEmptyAndFromEmpty) {
+  ContactStore s;
+  s.adopt_particle_pairs({0, 3}, {4, 7});
+  ASSERT_EQ(s.particle_pairs.size(), 2u);
+  EXPECT_EQ(s.touching_particle_contacts(), 0u);
+  s.particle_pairs.history[1] = touching(5.0);
+  s.adopt_particle_pairs({}, {});
+  EXPECT_EQ(s.particle_pairs.size(), 0u);  // nothing bonded: everything dropped
+}
+
+TEST(ContactStore, AdoptWallPairs) {
+  ContactStore s;
+  s.wall_pairs.wall = {0, 0, 1};
+  s.wall_pairs.particle = {2, 4, 2};
+  s.wall_pairs.history = {touching(1.0), touching(2.0), touching(3.0)};
+  s.adopt_wall_pairs({0, 1, 1}, {4, 0, 2});
+  // (0,2) vanished -> dropped; (0,4) and (1,2) keep history; (1,0) fresh.
+  ASSERT_EQ(s.wall_pairs.size(), 3u);
+  EXPECT_EQ(s.wall_pairs.wall, (std::vector<Index>{0, 1, 1}));
+  EXPECT_EQ(s.wall_pairs.particle, (std::vector<Index>{4, 0, 2}));
+  EXPECT_TRUE(same(s.wall_pairs.history[0], touching(2.0)));
+  EXPECT_TRUE(same(s.wall_pairs.history[1], ContactHistory{}));
+  EXPECT_TRUE(same(s.wall_pairs.history[2], touching(3.0)));
+  EXPECT_EQ(s.touching_wall_contacts(), 2u);
+}
+
+TEST(ContactStore, RenumberAfterRemoval) {
+  ContactStore s;
+  // Particles 0..4; remove particle 1: old_to_new = {0, removed, 1, 2, 3}.
+  set_pairs(s.particle_pairs, {0, 0, 1, 2, 3}, {1, 2, 4, 4, 4},
+            {touching(1.0), touching(2.0), touching(3.0), touching(4.0, true), touching(5.0)});
+  s.wall_pairs.wall = {0, 0, 1};
+  s.wall_pairs.particle = {1, 3, 0};
+  s.wall_pairs.history = {touching(6.0), touching(7.0), touching(8.0)};
+  const Index X = ParticleArrays::kRemoved;
+  s.renumber_particles({0, X, 1, 2, 3});
+  // Pairs with particle 1 vanish; (0,2)->(0,1), (2,4)->(1,3), (3,4)->(2,3), history kept.
+  const auto& l = s.particle_pairs;
+  ASSERT_EQ(l.size(), 3u);
+  EXPECT_EQ(l.first, (std::vector<Index>{0, 1, 2}));
+  EXPECT_EQ(l.second, (std::vector<Index>{1, 3, 3}));
+  EXPECT_TRUE(same(l.history[0], touching(2.0)));
+  EXPECT_TRUE(same(l.history[1], touching(4.0, true)));
+  EXPECT_TRUE(same(l.history[2], touching(5.0)));
+  // Wall pairs: (0, p1) dropped, (0, p3)->(0, 2), (1, p0)->(1, 0).
+  ASSERT_EQ(s.wall_pairs.size(), 2u);
+  EXPECT_EQ(s.wall_pairs.wall, (std::vector<Index>{0, 1}));
+  EXPECT_EQ(s.wall_pairs.particle, (std::vector<Index>{2, 0}));
+  EXPECT_TRUE(same(s.wall_pairs.history[0], touching(7.0)));
+  EXPECT_TRUE(same(s.wall_pairs.history[1], touching(8.0)));
+}
+
+TEST(ContactStore, RenumberPermutationSwapsBodiesAndFlipsVectors) {
+  // Permutation 0 <-> 1 of two particles: pair (0,1) becomes (1,0) -> stored as (0,1) with
+  // bodies 1 and 2 exchanged, so the normal (from body 1 to body 2) and the shear force on
+  // body 2 change sign (the force on the new body 2 is minus the force on the old body 2).
+  ContactStore s;
+  ContactHistory h = touching(1.5);
+  h.normal = Vec3(0.6, 0.8, 0.0);
+  set_pairs(s.particle_pairs, {0}, {1}, {h});
+  s.renumber_particles({1, 0});
+  ASSERT_EQ(s.particle_pairs.size(), 1u);
+  EXPECT_EQ(s.particle_pairs.first[0], 0u);
+  EXPECT_EQ(s.particle_pairs.second[0], 1u);
+  EXPECT_EQ(s.particle_pairs.history[0].normal, Vec3(-0.6, -0.8, 0.0));
+  EXPECT_EQ(s.particle_pairs.history[0].shear_force, -h.shear_force);
+  EXPECT_EQ(s.particle_pairs.history[0].normal_force, h.normal_force);  // scalar, unchanged
+}
+
+TEST(InstallBonds, BondsTouchingPairsWithinGap) {
+  // Three spheres R = 1 mm on the x axis: 0-1 overlap 1 um, 1-2 gap 2 um, 0-2 far apart.
+  PhysicsSettings ph;
+  ph.particle_materials = {{"seed", 1000.0, 1e5, 1e5, 0.3}};
+  ph.integrator.gravity = Vec3::Zero();
+  ph.time_step.automatic = false;
+  ph.time_step.fixed_dt = 1e-7;
+  ph.skin = 1e-4;
+  const double R = 1e-3;
+  World w;
+  w.particles.add(Vec3(0, 0, 0), R, 1000.0);
+  w.particles.add(Vec3(2 * R - 1e-6, 0, 0), R, 1000.0);
+  w.particles.add(Vec3(4 * R - 1e-6 + 2e-6, 0, 0), R, 1000.0);
+  Stepper st(ph);
+  st.prepare(w);
+  ASSERT_EQ(w.contacts.particle_pairs.size(), 2u);  // (0,1), (1,2) within the skin
+  // gap 0: only the overlapping pair.
+  {
+    World w0 = w;
+    EXPECT_EQ(install_bonds(w0, 0.0), 1u);
+    EXPECT_EQ(w0.contacts.bonded_contacts(), 1u);
+    EXPECT_EQ(w0.contacts.particle_pairs.history[0].bonded, 1);
+    EXPECT_EQ(w0.contacts.particle_pairs.history[1].bonded, 0);
+    // Installing again adds nothing.
+    EXPECT_EQ(install_bonds(w0, 0.0), 0u);
+  }
+  // gap 3 um >= 2 um: both; the gapped pair becomes a touching bonded contact with n = +x.
+  EXPECT_EQ(install_bonds(w, 3e-6), 2u);
+  EXPECT_EQ(w.contacts.particle_pairs.history[1].touching, 1);
+  EXPECT_EQ(w.contacts.particle_pairs.history[1].bonded, 1);
+  EXPECT_NEAR((w.contacts.particle_pairs.history[1].normal - Vec3::UnitX()).norm(), 0.0, 1e-15);
+}
+
+TEST(DiscardAbove, RemovesSpheresAndTheirContacts) {
+  // Column of 3 touching spheres (R = 1 mm) on z, centres at ~1, 3, 5 mm, tops at ~2, 4, 6 mm;
+  // discard those whose top z + R > 4.5 mm: sphere 2 goes, its contact with sphere 1 goes too.
+  PhysicsSettings ph;
+  ph.particle_materials = {{"seed", 1000.0, 1e5, 1e5, 0.3}};
+  ph.time_step.automatic = false;
+  ph.time_step.fixed_dt = 1e-7;
+  ph.skin = 1e-4;
+  const double R = 1e-3;
+  World w;
+  for (int i = 0; i < 3; ++i) w.particles.add(Vec3(0, 0, R + i * (2 * R - 1e-6)), R, 1000.0);
+  Stepper st(ph);
+  st.prepare(w);
+  install_bonds(w, 0.0);
+  ASSERT_EQ(w.contacts.bonded_contacts(), 2u);
+  EXPECT_EQ(discard_above(w, st, 4.5e-3), 1u);
+  EXPECT_EQ(w.particles.size(), 2u);
+  ASSERT_EQ(w.contacts.particle_pairs.size(), 1u);
+  EXPECT_EQ(w.contacts.particle_pairs.first[0], 0u);
+  EXPECT_EQ(w.contacts.particle_pairs.second[0], 1u);
+  EXPECT_EQ(w.contacts.bonded_contacts(), 1u);
+}

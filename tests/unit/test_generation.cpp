@@ -1,0 +1,134 @@
+// Seeded random non-overlapping placement (physics.md section 4, "Generation"):
+// same request and seed -> the same packing bit for bit; spheres inside the region,
+// non-overlapping, diameters uniform on [d_min, d_max].
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "scenario/generation.hpp"
+
+using namespace colza;
+
+namespace {
+
+GenerationRequest box_request(std::uint64_t seed) {
+  GenerationRequest r;
+  // 50 mm cube, 200 spheres of 6-7 mm: solid fraction about 200 * pi/6 (6.5e-3)^3 / 1.25e-4 = 0.23,
+  // well below the random sequential addition limit (~0.38).
+  r.region = GenerationRegion::box(Vec3(0.0, 0.0, 0.0), Vec3(0.05, 0.05, 0.05));
+  r.count = 200;
+  r.diameter_min = 6e-3;
+  r.diameter_max = 7e-3;
+  r.seed = seed;
+  return r;
+}
+
+GenerationRequest cylinder_request(std::uint64_t seed) {
+  GenerationRequest r;
+  // The oedometer's generation region: diameter 100 mm, height 200 mm (here 100 mm, 500 spheres).
+  r.region = GenerationRegion::vertical_cylinder(Vec3(0.01, -0.02, 0.0), 0.05, 0.1);
+  r.count = 500;
+  r.diameter_min = 6e-3;
+  r.diameter_max = 7e-3;
+  r.seed = seed;
+  return r;
+}
+
+bool bitwise_equal(const std::vector<PackedSphere>& a, const std::vector<PackedSphere>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const double da[4] = {a[i].position.x(), a[i].position.y(), a[i].position.z(), a[i].radius};
+    const double db[4] = {b[i].position.x(), b[i].position.y(), b[i].position.z(), b[i].radius};
+    if (std::memcmp(da, db, sizeof da) != 0) return false;
+  }
+  return true;
+}
+
+void check_packing(const GenerationRequest& req, const std::vector<PackedSphere>& s) {
+  ASSERT_EQ(s.size(), req.count);
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const double d = 2.0 * s[i].radius;
+    EXPECT_GE(d, req.diameter_min) << i;
+    EXPECT_LE(d, req.diameter_max) << i;
+    const Vec3& x = s[i].position;
+    // Inside the region (whole sphere, not only its centre).
+    EXPECT_GE(x.z() - s[i].radius, req.region.lo.z()) << i;
+    EXPECT_LE(x.z() + s[i].radius, req.region.hi.z()) << i;
+    if (req.region.shape == GenerationRegion::Shape::kBox) {
+      for (int k = 0; k < 2; ++k) {
+        EXPECT_GE(x[k] - s[i].radius, req.region.lo[k]) << i;
+        EXPECT_LE(x[k] + s[i].radius, req.region.hi[k]) << i;
+      }
+    } else {
+      const double rho = std::hypot(x.x() - req.region.axis_point.x(), x.y() - req.region.axis_point.y());
+      EXPECT_LE(rho + s[i].radius, req.region.radius * (1 + 1e-15)) << i;
+    }
+    // Non-overlapping: |xi - xj| >= Ri + Rj for every pair (brute force, n^2/2 checks).
+    for (std::size_t j = 0; j < i; ++j)
+      ASSERT_GE((s[j].position - x).norm(), s[i].radius + s[j].radius) << i << " overlaps " << j;
+  }
+}
+
+}  // namespace
+
+TEST(Generation, SameSeedSamePackingBitForBit) {
+  for (const GenerationRequest& req : {box_request(42), cylinder_request(42)}) {
+    const auto a = generate_spheres(req);
+    const auto b = generate_spheres(req);
+    ASSERT_EQ(a.size(), req.count);
+    EXPECT_TRUE(bitwise_equal(a, b));
+  }
+}
+
+TEST(Generation, DifferentSeedDifferentPacking) {
+  const auto a = generate_spheres(box_request(1));
+  const auto b = generate_spheres(box_request(2));
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_FALSE(bitwise_equal(a, b));
+  // Not merely a shifted tail: the very first sphere differs already.
+  EXPECT_NE(a[0].position, b[0].position);
+}
+
+TEST(Generation, BoxPackingInsideNonOverlappingDiametersInRange) {
+  const GenerationRequest req = box_request(7);
+  check_packing(req, generate_spheres(req));
+}
+
+TEST(Generation, CylinderPackingInsideNonOverlappingDiametersInRange) {
+  const GenerationRequest req = cylinder_request(7);
+  check_packing(req, generate_spheres(req));
+}
+
+TEST(Generation, DiametersAreUniformOnTheRange) {
+  // Uniform on [6, 7] mm: mean 6.5 mm, standard deviation of the mean over n spheres
+  // (1 mm / sqrt 12) / sqrt n = 0.0129 mm for n = 500. Allow 5 standard deviations.
+  // Also the fraction below 6.5 mm is 1/2 +- 5 sqrt(1/4 / 500) = 0.5 +- 0.112.
+  const GenerationRequest req = cylinder_request(3);
+  const auto s = generate_spheres(req);
+  ASSERT_EQ(s.size(), 500u);
+  double sum = 0.0;
+  std::size_t below = 0;
+  for (const auto& p : s) {
+    sum += 2 * p.radius;
+    if (2 * p.radius < 6.5e-3) ++below;
+  }
+  const double mean = sum / s.size();
+  EXPECT_NEAR(mean, 6.5e-3, 5 * 1e-3 / std::sqrt(12.0) / std::sqrt(500.0));
+  EXPECT_NEAR(static_cast<double>(below) / s.size(), 0.5, 5 * std::sqrt(0.25 / 500.0));
+}
+
+TEST(Generation, StopsWhenAttemptsAreExhausted) {
+  // A 10 mm cube cannot hold 1000 spheres of d >= 6 mm. Volume bound: the spheres are disjoint
+  // balls inside the 10 mm cube (volume 1e-6 m^3), each of volume >= pi/6 (6e-3)^3 = 1.13e-7 m^3,
+  // so at most 8 fit; the generator must give up after max_attempts failures and return fewer.
+  GenerationRequest req;
+  req.region = GenerationRegion::box(Vec3::Zero(), Vec3(0.01, 0.01, 0.01));
+  req.count = 1000;
+  req.diameter_min = 6e-3;
+  req.diameter_max = 7e-3;
+  req.max_attempts = 2000;
+  const auto s = generate_spheres(req);
+  EXPECT_GE(s.size(), 1u);
+  EXPECT_LE(s.size(), 8u);
+}
