@@ -8,17 +8,18 @@
 #endif
 
 #include "cli/run_commands.hpp"
+#include "core/version.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"colza: discrete element simulation of oilseed bulks (oedometer, shear box)"};
-  app.set_version_flag("--version", std::string("colza 0.1.0 (") + COLZA_GIT_REVISION + ")");
+  app.set_version_flag("--version", std::string("colza ") + colza::kVersion + " (" + colza::git_revision() + ")");
   app.require_subcommand(1);
 
   colza::RunOptions opt;
   CLI::App* run = app.add_subcommand("run", "run a scenario and write its results to --out");
-  run->add_option("scenario", opt.scenario, "oedometer | scene")
+  run->add_option("scenario", opt.scenario, "oedometer | shear | shear-series | scene")
       ->required()
-      ->check(CLI::IsMember({"oedometer", "scene"}));
+      ->check(CLI::IsMember({"oedometer", "shear", "shear-series", "scene"}));
   run->add_option("--config", opt.config_path, "TOML config (default: built-in = data/oedometer.toml)");
   run->add_option("--set", opt.overrides, "override a config key: --set particle.friction=0.3 (repeatable)")
       ->take_last()
@@ -29,6 +30,9 @@ int main(int argc, char** argv) {
   run->add_option("--threads", opt.threads, "worker threads")->check(CLI::PositiveNumber);
   run->add_option("--out", opt.out_dir, "output directory")->required();
   run->add_flag("--force", opt.force, "replace an earlier result in --out (only once the new run has succeeded)");
+  run->add_option("--normal-stress", opt.normal_stress, "shear: normal stress held by the plate (Pa)")
+      ->check(CLI::PositiveNumber);
+  run->add_option("--jobs", opt.jobs, "shear-series: loads run concurrently")->check(CLI::PositiveNumber);
   run->add_flag("--quiet", opt.quiet, "no progress display");
 
   try {

@@ -1,10 +1,13 @@
 #include "cli/run_commands.hpp"
 
+#include "cli/command_common.hpp"
+
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 
 #include "config/run_config.hpp"
+#include "core/version.hpp"
 #include "contact/slot_registry.hpp"
 #include "io/hdf5_writer.hpp"
 #include "io/output_dir.hpp"
@@ -16,33 +19,6 @@
 namespace colza {
 
 namespace {
-
-nlohmann::json common_summary(const RunConfig& c, const std::string& scenario, int threads) {
-  return {{"scenario", scenario},
-          {"colza_version", "0.1.0"},
-          {"git_revision", COLZA_GIT_REVISION},
-          {"config", c.source},
-          {"seed", c.seed},
-          {"threads", threads},
-          {"stiffness_rule", to_string(c.stiffness_rule)},
-          {"contact_model", describe(c.contact)},
-          {"damping", c.integration.damping},
-          {"damping_form", to_string(c.integration.damping_form)},
-          {"time_step_mode", c.integration.automatic_time_step ? "auto" : "fixed"}};
-}
-
-double total_wall_seconds(const std::vector<StageTiming>& stages) {
-  double t = 0.0;
-  for (const auto& s : stages) t += s.wall_seconds;
-  return t;
-}
-
-double overall_rate(const std::vector<StageTiming>& stages) {
-  double ps = 0.0;
-  for (const auto& s : stages) ps += s.particle_steps;
-  const double t = total_wall_seconds(stages);
-  return t > 0.0 ? ps / t : 0.0;
-}
 
 void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging& out) {
   Progress progress(!opt.quiet);
@@ -144,21 +120,28 @@ void run_scene_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging
 }  // namespace
 
 int run_command(const RunOptions& opt) {
-  const Scenario scenario = opt.scenario == "scene" ? Scenario::kScene : Scenario::kOedometer;
+  const Scenario scenario = opt.scenario == "scene"       ? Scenario::kScene
+                            : opt.scenario == "oedometer" ? Scenario::kOedometer
+                                                          : Scenario::kShear;
+  const bool series = opt.scenario == "shear-series";
   RunConfig config;
   try {
     std::vector<std::string> overrides = opt.overrides;
     if (opt.seed >= 0) overrides.push_back("seed=" + std::to_string(opt.seed));
     config = load_run_config(scenario, opt.config_path, overrides);
     if (opt.out_dir.empty()) throw ConfigError("--out", "", "an output directory is required");
+    if (scenario == Scenario::kShear && !series && !(opt.normal_stress > 0.0))
+      throw ConfigError("--normal-stress", "", "`colza run shear` needs --normal-stress PA (> 0)");
     check_output_dir(opt.out_dir, opt.force);
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "colza: error: %s\n", e.what());
     return 2;
   }
   try {
+    if (series) return run_shear_series(config, opt);
     OutputStaging out(opt.out_dir, opt.force);
     if (scenario == Scenario::kOedometer) run_oedometer_scenario(config, opt, out);
+    else if (scenario == Scenario::kShear) run_shear_scenario(config, opt, out);
     else run_scene_scenario(config, opt, out);
     out.commit();
   } catch (const ConfigError& e) {

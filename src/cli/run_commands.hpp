@@ -6,7 +6,7 @@
 namespace colza {
 
 struct RunOptions {
-  std::string scenario;               // "oedometer" | "scene"
+  std::string scenario;               // "oedometer" | "shear" | "shear-series" | "scene"
   std::string config_path;            // empty: built-in defaults (= data/oedometer.toml)
   std::vector<std::string> overrides; // --set key=value
   long long seed = -1;                // --seed, -1: from the config
@@ -14,6 +14,8 @@ struct RunOptions {
   std::string out_dir;
   bool force = false;
   bool quiet = false;
+  double normal_stress = 0.0;         // Pa, `shear` only
+  int jobs = 1;                       // concurrent loads, `shear-series` only
 };
 
 // Returns the process exit code: 0 success, 2 bad input (message already printed).

@@ -243,6 +243,20 @@ std::vector<std::int64_t> ConfigNode::integer_list(const std::string& key) const
   return out;
 }
 
+std::vector<double> ConfigNode::number_list(const std::string& key) const {
+  std::vector<double> out;
+  const toml::node* n = find(key);
+  if (!n) return out;
+  const toml::array* a = n->as_array();
+  if (!a) fail(key, "expected an array of numbers, got " + describe(*n));
+  for (const auto& e : *a) {
+    if (auto v = e.value_exact<double>()) out.push_back(*v);
+    else if (auto i = e.value_exact<std::int64_t>()) out.push_back(static_cast<double>(*i));
+    else fail(key, "expected an array of numbers");
+  }
+  return out;
+}
+
 ConfigNode ConfigNode::table(const std::string& key) const {
   const toml::node* n = table_ ? table_->get(key) : nullptr;
   if (!n) return ConfigNode(reader_, nullptr, full(key));

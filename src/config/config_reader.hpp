@@ -31,6 +31,7 @@ class ConfigNode {
                      const std::vector<std::string>& choices) const;
   Vec3 vec3(const std::string& key, const Vec3& fallback) const;
   std::vector<std::int64_t> integer_list(const std::string& key) const;
+  std::vector<double> number_list(const std::string& key) const;
   bool has(const std::string& key) const;
   bool is_string(const std::string& key) const;
   ConfigNode table(const std::string& key) const;              // empty view if absent

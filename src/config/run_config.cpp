@@ -7,7 +7,14 @@
 
 namespace colza {
 
-const char* to_string(Scenario s) { return s == Scenario::kOedometer ? "oedometer" : "scene"; }
+const char* to_string(Scenario s) {
+  switch (s) {
+    case Scenario::kOedometer: return "oedometer";
+    case Scenario::kShear: return "shear";
+    case Scenario::kScene: return "scene";
+  }
+  return "?";
+}
 
 namespace {
 
@@ -77,6 +84,44 @@ OedometerSpec read_oedometer(const ConfigNode& t, const ParticleSpec& particle) 
   if (o.generation_height < o.cylinder_height) t.fail("generation_height", "must be at least oedometer.cylinder_height");
   o.packing_file = t.string("packing_file", "");
   return o;
+}
+
+ShearBoxSpec read_shear_box(const ConfigNode& t, const ParticleSpec& particle) {
+  ShearBoxSpec b;
+  b.length = t.positive("length", b.length);
+  b.width = t.positive("width", b.width);
+  b.height = t.positive("height", b.height);
+  b.shear_plane = t.positive("shear_plane", b.shear_plane);
+  b.rim_length = t.positive("rim_length", b.rim_length);
+  b.generation_height = t.positive("generation_height", b.generation_height);
+  if (t.has("normal_stresses")) {
+    b.normal_stresses.clear();
+    for (double v : t.number_list("normal_stresses")) {
+      if (!(v > 0.0)) t.fail("normal_stresses", "every normal stress must be positive (Pa)");
+      b.normal_stresses.push_back(v);
+    }
+    if (b.normal_stresses.empty()) t.fail("normal_stresses", "needs at least one normal stress (Pa)");
+  }
+  b.shear_speed = t.positive("shear_speed", b.shear_speed);
+  b.shear_displacement = t.positive("shear_displacement", b.shear_displacement);
+  b.strength_window_start = t.non_negative("strength_window_start", b.strength_window_start);
+  b.strength_window_end = t.positive("strength_window_end", b.strength_window_end);
+  b.servo_relaxation = t.number_in("servo_relaxation", b.servo_relaxation, 1e-3, 1.0);
+  b.servo_max_speed = t.positive("servo_max_speed", b.servo_max_speed);
+  b.consolidation_tolerance = t.positive("consolidation_tolerance", b.consolidation_tolerance);
+  b.consolidation_window = t.positive("consolidation_window", b.consolidation_window);
+  b.consolidation_plate_speed = t.positive("consolidation_plate_speed", b.consolidation_plate_speed);
+  b.consolidation_max_time = t.positive("consolidation_max_time", b.consolidation_max_time);
+  b.record_interval = t.integer("record_interval", b.record_interval, 1);
+  b.packing_file = t.string("packing_file", "");
+  if (b.shear_plane >= b.height) t.fail("shear_plane", "must lie below shear_box.height");
+  if (b.generation_height < b.height) t.fail("generation_height", "must be at least shear_box.height");
+  if (b.strength_window_start >= b.strength_window_end)
+    t.fail("strength_window_start", "must be below shear_box.strength_window_end");
+  if (b.strength_window_end > b.shear_displacement)
+    t.fail("strength_window_end", "must not exceed shear_box.shear_displacement");
+  if (std::min(b.length, b.width) <= particle.diameter_max) t.fail("length", "the box must be wider than a particle");
+  return b;
 }
 
 // A relative path in the config file is relative to the file's folder; one given with
@@ -173,6 +218,13 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
     if (!c.oedometer.packing_file.empty()) {
       c.oedometer.packing_file = resolve_input_path(reader, "oedometer.packing_file", c.oedometer.packing_file);
       read_packing(c.oedometer.packing_file, "oedometer.packing_file");  // fail early if missing or malformed
+    }
+  } else if (scenario == Scenario::kShear) {
+    c.sample = read_sample(root.table("sample"));
+    c.shear_box = read_shear_box(root.table("shear_box"), c.particle);
+    if (!c.shear_box.packing_file.empty()) {
+      c.shear_box.packing_file = resolve_input_path(reader, "shear_box.packing_file", c.shear_box.packing_file);
+      read_packing(c.shear_box.packing_file, "shear_box.packing_file");
     }
   } else {
     c.scene = read_scene(root.table("scene"), reader);

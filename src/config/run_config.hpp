@@ -60,6 +60,28 @@ struct OedometerSpec {                // [oedometer]
   std::string packing_file;
 };
 
+struct ShearBoxSpec {                // [shear_box], physics.md section 4
+  double length = 0.200;              // m, inner size along x (shear direction)
+  double width = 0.200;               // m, inner size along y
+  double height = 0.080;              // m, both halves; particles above are discarded
+  double shear_plane = 0.040;         // m, height of the lower half
+  double rim_length = 0.040;          // m, the rims are length-wise plates of rim_length x width
+  double generation_height = 0.200;   // m, particles are generated in the box extended to this height
+  std::vector<double> normal_stresses{25.75e3, 43.50e3, 61.00e3, 78.75e3};  // Pa, on length x width
+  double shear_speed = 0.3 / 60.0;    // m/s (300 mm/min, the paper's simulation speed; lab: 3 mm/min)
+  double shear_displacement = 0.030;  // m, shearing stops here
+  double strength_window_start = 0.020;  // m, shear strength = mean stress over [start, end]
+  double strength_window_end = 0.030;    // m
+  double servo_relaxation = 0.5;      // fraction of the force error corrected per step (-)
+  double servo_max_speed = 0.05;      // m/s, plate speed limit
+  double consolidation_tolerance = 0.01;  // relative stress error for "held"
+  double consolidation_window = 0.02;     // s, stress held and plate still for this long
+  double consolidation_plate_speed = 1e-4;  // m/s, "still" means slower than this
+  double consolidation_max_time = 2.0;      // s
+  std::int64_t record_interval = 100;       // steps between curve samples
+  std::string packing_file;           // optional settled packing (skips generation and settling)
+};
+
 struct SceneParticle {
   Vec3 position = Vec3::Zero();
   double radius = 0.0;
@@ -88,10 +110,11 @@ struct RunConfig {
   IntegrationSpec integration;
   SampleSpec sample;
   OedometerSpec oedometer;
+  ShearBoxSpec shear_box;
   SceneSpec scene;
 };
 
-enum class Scenario { kOedometer, kScene };
+enum class Scenario { kOedometer, kShear, kScene };
 const char* to_string(Scenario s);
 
 // Reads and validates everything the scenario needs, then rejects unknown keys.

@@ -2,6 +2,8 @@
 
 #include <H5Cpp.h>
 
+#include "core/version.hpp"
+
 namespace colza {
 
 Hdf5Writer::Hdf5Writer(const std::string& file)
@@ -71,8 +73,8 @@ void Hdf5Writer::write_particles(const std::string& group, const ParticleArrays&
 
 void write_provenance(Hdf5Writer& h5, const std::string& scenario, std::uint64_t seed, const std::string& config_toml) {
   h5.attribute("schema_version", static_cast<std::int64_t>(kResultSchemaVersion));
-  h5.attribute("colza_version", std::string("0.1.0"));
-  h5.attribute("git_revision", std::string(COLZA_GIT_REVISION));
+  h5.attribute("colza_version", std::string(kVersion));
+  h5.attribute("git_revision", std::string(git_revision()));
   h5.attribute("scenario", scenario);
   h5.attribute("seed", static_cast<std::int64_t>(seed));
   h5.attribute("config_toml", config_toml);

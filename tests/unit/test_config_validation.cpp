@@ -121,6 +121,33 @@ TEST(ConfigValidation, MissingPackingFileOfASceneIsNamed) {
   EXPECT_FALSE(c.integration.automatic_time_step);
 }
 
+TEST(ConfigValidation, MissingPackingFileOfTheOedometerIsNamed) {
+  TempDir dir;
+  const std::string cfg = dir.write("oed.toml", "[oedometer]\npacking_file = \"settled.txt\"\n");
+  const ConfigError e = expect_config_error([&] { load_run_config(Scenario::kOedometer, cfg, {}); });
+  EXPECT_EQ(e.key(), "oedometer.packing_file");
+}
+
+TEST(ConfigValidation, ShearBoxGeometryErrorsAreNamed) {
+  const auto shear_error = [](const std::string& toml) {
+    return expect_config_error(
+        [&] { read_run_config(Scenario::kShear, ConfigReader::from_string(toml, "shear.toml")); });
+  };
+  EXPECT_EQ(shear_error("[shear_box]\nshear_plane = 0.09\n").key(), "shear_box.shear_plane");
+  EXPECT_EQ(shear_error("[shear_box]\nnormal_stresses = [25.75e3, -1.0]\n").key(), "shear_box.normal_stresses");
+  EXPECT_EQ(shear_error("[shear_box]\nlenght = 0.2\n").key(), "shear_box.lenght");
+  // The defaults are valid: physics.md section 4 (200 x 200 x 80 mm, shear plane at 40 mm,
+  // four normal stresses 25.75 ... 78.75 kPa, 300 mm/min to 30 mm).
+  const RunConfig c = read_run_config(Scenario::kShear, ConfigReader::empty());
+  EXPECT_EQ(c.shear_box.length, 0.200);
+  EXPECT_EQ(c.shear_box.width, 0.200);
+  EXPECT_EQ(c.shear_box.height, 0.080);
+  EXPECT_EQ(c.shear_box.shear_plane, 0.040);
+  EXPECT_EQ(c.shear_box.normal_stresses, (std::vector<double>{25.75e3, 43.50e3, 61.00e3, 78.75e3}));
+  EXPECT_NEAR(c.shear_box.shear_speed, 0.3 / 60.0, 1e-18);
+  EXPECT_EQ(c.shear_box.shear_displacement, 0.030);
+}
+
 TEST(ConfigValidation, SceneNeedsAnExplicitTimeStep) {
   const ConfigError e = expect_config_error([&] {
     read_run_config(Scenario::kScene, ConfigReader::from_string("[scene]\nsteps = 10\n", "s.toml"));
@@ -200,6 +227,7 @@ void expect_same_numbers(const RunConfig& a, const RunConfig& b, const std::stri
   EXPECT_EQ(a.oedometer.record_interval, b.oedometer.record_interval);
   EXPECT_EQ(a.oedometer.fit_force_min, b.oedometer.fit_force_min);
   EXPECT_EQ(a.oedometer.fit_force_max, b.oedometer.fit_force_max);
+  EXPECT_EQ(a.oedometer.packing_file, b.oedometer.packing_file);
 }
 
 }  // namespace

@@ -90,13 +90,13 @@ TEST(CriticalTimeStep, LoneSphereCountsOneContactWithItsOwnMaterial) {
   const double dt_trans = std::sqrt(m / (kn / 2 + ks / 2));  // = sqrt(m / 268.5e3)
   const double dt_rot = std::sqrt(I / (ks / 2 * R * R));     // = sqrt(0.4 m / 50e3) = sqrt(m / 125e3)
   ASSERT_LT(dt_trans, dt_rot);  // translational limit is the smaller one here
-  EXPECT_NEAR(critical_time_step(p, ContactStore{}, t), dt_trans, dt_trans * 1e-14);
+  EXPECT_NEAR(critical_time_step(p, {}, ContactStore{}, t), dt_trans, dt_trans * 1e-14);
 
   // A very stiff shear spring makes the rotational limit the smaller one:
   // Ks = 10 Kn: sqrt(0.4 m / Ks) < sqrt(m / (Kn + Ks)) since 0.4 (Kn + Ks) = 4.4 Kn < Ks = 10 Kn.
   const PairTable t2({seed_material(kn, 10 * kn, 0.2)}, {}, StiffnessRule::kSeries);
   const double dt_rot2 = std::sqrt(I / (10 * kn / 2 * R * R));
-  EXPECT_NEAR(critical_time_step(p, ContactStore{}, t2), dt_rot2, dt_rot2 * 1e-14);
+  EXPECT_NEAR(critical_time_step(p, {}, ContactStore{}, t2), dt_rot2, dt_rot2 * 1e-14);
 }
 
 TEST(CriticalTimeStep, SafetyFactorAppliedByStepper) {
@@ -135,7 +135,7 @@ TEST(CriticalTimeStep, TwoTouchingSpheres) {
   const double m = rho * 4.0 / 3.0 * kPi * R * R * R;
   // "contact" rule: Kn = 437e3, Ks = 100e3 used directly; dt = sqrt(m / 537e3)
   // (rotational: sqrt(0.4 m / 100e3) = sqrt(m / 250e3) is larger).
-  EXPECT_NEAR(critical_time_step(p, c, t), std::sqrt(m / 537e3), 1e-18);
+  EXPECT_NEAR(critical_time_step(p, {}, c, t), std::sqrt(m / 537e3), 1e-18);
 }
 
 TEST(CriticalTimeStep, WallContactUsesTheWallsMaterial) {
@@ -163,10 +163,30 @@ TEST(CriticalTimeStep, WallContactUsesTheWallsMaterial) {
   ASSERT_EQ(w.contacts.touching_wall_contacts(), 1u);
   const double m = rho * 4.0 / 3.0 * kPi * R * R * R;
   const double expected = std::sqrt(m / 5e6);  // rotational: sqrt(0.4 m / 1e6) is larger
-  const double got = critical_time_step(w.particles, w.contacts, stepper.pairs());
-  if (std::abs(got - expected) > 1e-12 * expected)
-    GTEST_SKIP() << "BUG: critical_time_step (src/integrate/time_step.cpp) looks up the particle-wall pair "
-                    "parameters with the wall's index pw.wall[c] instead of walls[pw.wall[c]].material; "
-                    "got dt = " << got << " (material 0's stiffness), expected " << expected;
+  // (Regression: the lookup once used the wall's index pw.wall[c] as its material index, which
+  // read the wrong row here and past the end of the table with 3 walls and 1 material.)
+  const double got = critical_time_step(w.particles, w.walls, w.contacts, stepper.pairs());
   EXPECT_NEAR(got, expected, 1e-12 * expected);
+}
+
+TEST(CriticalTimeStep, OedometerLikeThreeWallsOneMaterial) {
+  // Bottom, envelope and piston share wall material 0 (as in scenario/oedometer.cpp). A sphere
+  // touching the piston (wall 2) gets k = Kn_pw + Ks_pw, series rule with Table 1 numbers:
+  // Kn = 437*4000/4437 kN/m, Ks = 100*1000/1100 kN/m; dt = sqrt(m / (Kn + Ks)) (the rotational
+  // limit sqrt(0.4 m / Ks) is larger).
+  const double R = 3e-3, rho = 1250.0;
+  const PairTable t({seed_material(437e3, 100e3, 0.2)}, {wall_material(4000e3, 1000e3, 0.23)}, StiffnessRule::kSeries);
+  ParticleArrays p;
+  p.add(Vec3(0, 0, 0.05), R, rho);
+  std::vector<Wall> walls = {Wall::plane("bottom", Vec3::Zero(), Vec3::UnitZ()),
+                             Wall::cylinder("envelope", Vec3::Zero(), Vec3::UnitZ(), 0.05, 0.0, 0.08),
+                             Wall::plane("piston", Vec3(0, 0, 0.05 + R - 1e-6), -Vec3::UnitZ())};
+  ContactStore c;
+  c.wall_pairs.wall = {2};
+  c.wall_pairs.particle = {0};
+  c.wall_pairs.history.resize(1);
+  c.wall_pairs.history[0].touching = 1;
+  const double m = rho * 4.0 / 3.0 * kPi * R * R * R;
+  const double kn = 437e3 * 4000e3 / 4437e3, ks = 100e3 * 1000e3 / 1100e3;
+  EXPECT_NEAR(critical_time_step(p, walls, c, t), std::sqrt(m / (kn + ks)), 1e-18);
 }

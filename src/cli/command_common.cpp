@@ -1,0 +1,35 @@
+#include "cli/command_common.hpp"
+
+#include "contact/slot_registry.hpp"
+#include "core/version.hpp"
+
+namespace colza {
+
+nlohmann::json common_summary(const RunConfig& c, const std::string& scenario, int threads) {
+  return {{"scenario", scenario},
+          {"colza_version", kVersion},
+          {"git_revision", git_revision()},
+          {"config", c.source},
+          {"seed", c.seed},
+          {"threads", threads},
+          {"stiffness_rule", to_string(c.stiffness_rule)},
+          {"contact_model", describe(c.contact)},
+          {"damping", c.integration.damping},
+          {"damping_form", to_string(c.integration.damping_form)},
+          {"time_step_mode", c.integration.automatic_time_step ? "auto" : "fixed"}};
+}
+
+double total_wall_seconds(const std::vector<StageTiming>& stages) {
+  double t = 0.0;
+  for (const auto& s : stages) t += s.wall_seconds;
+  return t;
+}
+
+double overall_rate(const std::vector<StageTiming>& stages) {
+  double ps = 0.0;
+  for (const auto& s : stages) ps += s.particle_steps;
+  const double t = total_wall_seconds(stages);
+  return t > 0.0 ? ps / t : 0.0;
+}
+
+}  // namespace colza

@@ -1,0 +1,241 @@
+// `colza run shear` (one normal load) and `colza run shear-series` (every load of the
+// config, concurrently up to --jobs, resuming loads already finished).
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "analysis/mohr_coulomb.hpp"
+#include "cli/command_common.hpp"
+#include "io/hdf5_writer.hpp"
+#include "io/output_dir.hpp"
+#include "io/packing_file.hpp"
+#include "io/summary.hpp"
+#include "scenario/shear_box.hpp"
+
+namespace colza {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// FNV-1a 64 of the configuration as used, without the list of loads: finished loads and
+// the prepared sample are reused only by a series with the same fingerprint.
+std::string config_fingerprint(const RunConfig& c) {
+  toml::table doc = toml::parse(c.resolved_toml);
+  if (auto* box = doc["shear_box"].as_table()) box->erase("normal_stresses");
+  std::ostringstream text;
+  text << doc;
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char ch : text.str()) h = (h ^ ch) * 1099511628211ull;
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+std::string load_dir_name(double sigma) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "load-%.0fPa", sigma);
+  return buf;
+}
+
+nlohmann::json load_summary(const RunConfig& c, const ShearSample& sample, const ShearLoadResult& r, int threads) {
+  nlohmann::json s = common_summary(c, "shear", threads);
+  s["config_fingerprint"] = config_fingerprint(c);
+  s["particles"] = r.particles;
+  s["particles_generated"] = sample.generated;
+  s["normal_stress"] = r.normal_stress_target;
+  s["shear_strength"] = r.shear_strength;
+  s["strength_window"] = {c.shear_box.strength_window_start, c.shear_box.strength_window_end};
+  s["peak_shear_stress"] = r.peak_shear_stress;
+  s["mean_normal_stress"] = r.mean_normal_stress;
+  s["mean_normal_stress_error"] = r.mean_normal_stress_error;
+  s["consolidated"] = r.consolidated;
+  s["consolidation_time"] = r.consolidation_time;
+  s["particles_outside"] = r.particles_outside;
+  s["bond_install"] = to_string(c.contact.bond_install);
+  s["bonds_installed"] = r.bonds_installed;
+  s["bonds_broken_tension"] = r.bonds_broken_tension;
+  s["bonds_broken_shear"] = r.bonds_broken_shear;
+  s["dt"] = r.dt;
+  s["steps"] = r.steps;
+  s["wall_seconds"] = total_wall_seconds(r.stages);
+  s["particle_steps_per_second"] = overall_rate(r.stages);
+  s["stages"] = stages_json(r.stages);
+  return s;
+}
+
+void write_load(OutputStaging& out, const RunConfig& c, const ShearLoadResult& r, const nlohmann::json& s) {
+  write_csv(out.path("curve.csv"), r.curve);
+  Hdf5Writer h5(out.path("result.h5"));
+  write_provenance(h5, "shear", c.seed, c.resolved_toml);
+  h5.attribute("normal_stress", r.normal_stress_target);
+  h5.attribute("summary_json", s.dump());
+  h5.write_table("curve", r.curve);
+  h5.write_particles("particles/final", r.final_state);
+  h5.close();
+  write_json(out.path("summary.json"), s);
+}
+
+void print_load(const ShearLoadResult& r) {
+  std::printf("  sigma %.2f kPa: shear strength %.3f kPa (peak %.3f), normal stress held %.2f kPa (mean error %.2f %%)%s, "
+              "%zu outside, %.1f s wall\n",
+              r.normal_stress_target * 1e-3, r.shear_strength * 1e-3, r.peak_shear_stress * 1e-3,
+              r.mean_normal_stress * 1e-3, 100.0 * r.mean_normal_stress_error,
+              r.consolidated ? "" : ", NOT consolidated within the time limit", r.particles_outside,
+              total_wall_seconds(r.stages));
+}
+
+// Writes `text` to `file` atomically (temporary name, then rename).
+void write_atomically(const fs::path& file, const std::string& text) {
+  const fs::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream o(tmp);
+    o << text;
+    if (!o) throw std::runtime_error("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, file);
+}
+
+}  // namespace
+
+void run_shear_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging& out) {
+  Progress progress(!opt.quiet);
+  const ShearSample sample = prepare_shear_sample(c, progress);
+  write_packing(out.path("packing.txt"), sample.particles);
+  const ShearLoadResult r = run_shear_load(c, sample, opt.normal_stress, progress);
+  nlohmann::json s = load_summary(c, sample, r, opt.threads);
+  std::vector<StageTiming> stages = sample.stages;
+  stages.insert(stages.end(), r.stages.begin(), r.stages.end());
+  s["wall_seconds"] = total_wall_seconds(stages);
+  s["stages"] = stages_json(stages);
+  write_load(out, c, r, s);
+  std::printf("shear: %zu particles (%zu generated)\n", r.particles, sample.generated);
+  print_load(r);
+}
+
+int run_shear_series(const RunConfig& config, const RunOptions& opt) {
+  const auto t_start = std::chrono::steady_clock::now();
+  const fs::path dir(opt.out_dir);
+  check_output_dir(dir, opt.force);  // a finished series is not overwritten without --force
+  fs::create_directories(dir);
+  const std::string fingerprint = config_fingerprint(config);
+
+  // --- the sample, shared by all loads (reused by a resumed series) ----------------
+  RunConfig c = config;
+  Progress progress(!opt.quiet && opt.jobs <= 1);
+  ShearSample sample;
+  bool sample_reused = false;
+  const fs::path sample_info = dir / "sample.json";
+  if (!opt.force && fs::exists(sample_info) && fs::exists(dir / "packing.txt") &&
+      nlohmann::json::parse(std::ifstream(sample_info)).value("config_fingerprint", "") == fingerprint) {
+    RunConfig from_file = c;
+    from_file.shear_box.packing_file = (dir / "packing.txt").string();
+    sample = prepare_shear_sample(from_file, progress);
+    sample.generated = nlohmann::json::parse(std::ifstream(sample_info)).value("particles_generated", sample.generated);
+    sample_reused = true;
+  } else {
+    sample = prepare_shear_sample(c, progress);
+    write_packing((dir / "packing.txt.tmp").string(), sample.particles);
+    fs::rename(dir / "packing.txt.tmp", dir / "packing.txt");
+    nlohmann::json info = {{"config_fingerprint", fingerprint},
+                           {"particles", sample.particles.size()},
+                           {"particles_generated", sample.generated},
+                           {"settling_converged", sample.settling.converged},
+                           {"stages", stages_json(sample.stages)}};
+    write_atomically(sample_info, info.dump(2) + "\n");
+  }
+  std::printf("shear series: %zu particles (%zu generated)%s, %zu loads, %d job(s)\n", sample.particles.size(),
+              sample.generated, sample_reused ? ", sample reused" : "", c.shear_box.normal_stresses.size(), opt.jobs);
+
+  // --- loads ------------------------------------------------------------------------
+  const auto& loads = c.shear_box.normal_stresses;
+  std::vector<double> strength(loads.size(), 0.0);
+  std::vector<nlohmann::json> load_json(loads.size());
+  std::vector<std::size_t> todo;
+  for (std::size_t k = 0; k < loads.size(); ++k) {
+    const fs::path summary = dir / load_dir_name(loads[k]) / "summary.json";
+    if (!opt.force && fs::exists(summary)) {
+      const auto s = nlohmann::json::parse(std::ifstream(summary));
+      if (s.value("config_fingerprint", "") == fingerprint && s.value("normal_stress", -1.0) == loads[k]) {
+        strength[k] = s["shear_strength"].get<double>();
+        load_json[k] = s;
+        load_json[k]["reused"] = true;
+        std::printf("  sigma %.2f kPa: reusing the finished load in %s\n", loads[k] * 1e-3, load_dir_name(loads[k]).c_str());
+        continue;
+      }
+    }
+    todo.push_back(k);
+  }
+  std::mutex mutex;
+  std::exception_ptr failure;
+  std::size_t next = 0;
+  auto worker = [&]() {
+    while (true) {
+      std::size_t k;
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (next >= todo.size() || failure) return;
+        k = todo[next++];
+      }
+      try {
+        Progress load_progress(!opt.quiet && opt.jobs <= 1);
+        const ShearLoadResult r = run_shear_load(c, sample, loads[k], load_progress);
+        nlohmann::json s = load_summary(c, sample, r, opt.threads);
+        OutputStaging out(dir / load_dir_name(loads[k]), true);
+        write_load(out, c, r, s);
+        out.commit();
+        std::lock_guard<std::mutex> lock(mutex);
+        strength[k] = r.shear_strength;
+        load_json[k] = s;
+        load_json[k]["reused"] = false;
+        print_load(r);
+        std::fflush(stdout);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  };
+  const int jobs = std::max(1, std::min<int>(opt.jobs, static_cast<int>(todo.size())));
+  std::vector<std::thread> pool;
+  for (int j = 1; j < jobs; ++j) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+
+  // --- Mohr-Coulomb line ----------------------------------------------------------
+  nlohmann::json s = common_summary(c, "shear-series", opt.threads);
+  s["config_fingerprint"] = fingerprint;
+  s["particles"] = sample.particles.size();
+  s["particles_generated"] = sample.generated;
+  s["loads"] = nlohmann::json::array();
+  for (std::size_t k = 0; k < loads.size(); ++k)
+    s["loads"].push_back({{"normal_stress", loads[k]},
+                          {"shear_strength", strength[k]},
+                          {"mean_normal_stress", load_json[k].value("mean_normal_stress", 0.0)},
+                          {"consolidated", load_json[k].value("consolidated", false)},
+                          {"particles_outside", load_json[k].value("particles_outside", 0)},
+                          {"wall_seconds", load_json[k].value("wall_seconds", 0.0)},
+                          {"reused", load_json[k].value("reused", false)},
+                          {"directory", load_dir_name(loads[k])}});
+  if (loads.size() >= 2) {
+    const MohrCoulombFit mc = fit_mohr_coulomb(loads, strength);
+    s["cohesion"] = mc.cohesion;
+    s["friction_angle_deg"] = mc.friction_angle_deg;
+    s["r2"] = mc.r2;
+    std::printf("Mohr-Coulomb: C = %.3f kPa, Phi = %.2f deg, R^2 = %.4f\n", mc.cohesion * 1e-3, mc.friction_angle_deg, mc.r2);
+  }
+  s["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  s["jobs"] = opt.jobs;
+  OutputStaging out(dir, /*overwrite=*/true);  // an earlier summary was refused above unless --force
+  write_json(out.path("summary.json"), s);
+  out.commit();
+  return 0;
+}
+
+}  // namespace colza

@@ -1,0 +1,60 @@
+// The paper's direct shear test (physics.md section 4): a 200 x 200 x 80 mm box of two
+// halves split at 40 mm, twelve rectangles (lower half: bottom, four sides, rim; upper half:
+// four sides, rim; pressure plate). The sample is generated in the box extended upward,
+// settled to 1e-3 N and cut at 80 mm; the plate is servo-controlled to hold the normal
+// stress; once it holds, the lower half is pulled in +x at 300 mm/min to 30 mm.
+#pragma once
+#include <string>
+#include <vector>
+#include "config/run_config.hpp"
+#include "io/progress.hpp"
+#include "io/table.hpp"
+#include "scenario/settling.hpp"
+#include "scenario/stage_timing.hpp"
+
+namespace colza {
+
+// Wall indices of the box in World::walls.
+struct ShearBoxWalls {
+  std::vector<std::size_t> lower;  // bottom, four sides, rim: move together in +x
+  std::vector<std::size_t> upper;  // four sides, rim: held
+  std::size_t plate = 0;           // added once the sample is prepared
+};
+
+// Adds the eleven box walls (the upper sides reach up to `wall_top`).
+ShearBoxWalls build_shear_box(World& world, const ShearBoxSpec& box, double wall_top);
+
+struct ShearSample {
+  ParticleArrays particles;      // settled and cut at the box height, at rest
+  std::size_t generated = 0;
+  SettleResult settling;
+  std::vector<StageTiming> stages;
+};
+
+// Generation + settling + discarding (or the packing file named in the config).
+ShearSample prepare_shear_sample(const RunConfig& config, Progress& progress);
+
+struct ShearLoadResult {
+  double normal_stress_target = 0.0;   // Pa
+  std::size_t particles = 0;
+  bool consolidated = false;           // plate held the stress within tolerance before shearing
+  double consolidation_time = 0.0;     // s (simulated)
+  std::size_t bonds_installed = 0;
+  Table curve{{"time", "shear_displacement", "shear_force", "shear_stress", "normal_stress", "plate_height",
+               "dilatancy", "contacts", "bonds"}};
+  double shear_strength = 0.0;         // Pa, mean shear stress over the strength window
+  double peak_shear_stress = 0.0;      // Pa
+  double mean_normal_stress = 0.0;     // Pa, during shearing
+  double mean_normal_stress_error = 0.0;  // mean |sigma - target| / target during shearing
+  std::size_t particles_outside = 0;   // spheres whose centre left the box at the end
+  std::uint64_t steps = 0;
+  double dt = 0.0;
+  std::vector<StageTiming> stages;
+  ParticleArrays final_state;
+  std::uint64_t bonds_broken_tension = 0, bonds_broken_shear = 0;
+};
+
+ShearLoadResult run_shear_load(const RunConfig& config, const ShearSample& sample, double normal_stress,
+                               Progress& progress);
+
+}  // namespace colza

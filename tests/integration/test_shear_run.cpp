@@ -1,0 +1,138 @@
+// End-to-end: the direct shear box on a small box (tests/data/small_shear.toml: 60 x 60 x
+// 40 mm, the paper's particles and bonds, two loads, 3 mm of shear). Checks the protocol's
+// invariants: servo accuracy, containment, sign of the shear force, resume, and that
+// friction is what gives the sample its friction angle.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cli_runner.hpp"
+
+using namespace colza::testing;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kConfig = source_path("tests/data/small_shear.toml");
+
+std::vector<std::vector<double>> read_rows(const fs::path& file, std::vector<std::string>& header) {
+  std::istringstream in(read_file(file));
+  std::string line;
+  std::getline(in, line);
+  header.clear();
+  std::istringstream h(line);
+  for (std::string name; std::getline(h, name, ',');) header.push_back(name);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::istringstream r(line);
+    for (std::string cell; std::getline(r, cell, ',');) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+class SmallShearSeries : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    out_ = scratch_dir("small-shear");
+    const CliResult r = run_colza("run shear-series --quiet --jobs 2 --config " + kConfig + " --out " + out_.string());
+    ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  }
+  static fs::path out_;
+};
+fs::path SmallShearSeries::out_;
+
+}  // namespace
+
+TEST_F(SmallShearSeries, SummaryHasTheFailureLine) {
+  const auto s = read_json(out_ / "summary.json");
+  for (const char* key : {"particles", "loads", "cohesion", "friction_angle_deg", "r2", "wall_seconds"})
+    EXPECT_TRUE(s.contains(key)) << key;
+  ASSERT_EQ(s["loads"].size(), 2u);
+  EXPECT_DOUBLE_EQ(s["loads"][0]["normal_stress"].get<double>(), 25.75e3);
+  // More normal stress, more shear strength: a positive friction angle below 90 degrees.
+  EXPECT_GT(s["loads"][1]["shear_strength"].get<double>(), s["loads"][0]["shear_strength"].get<double>());
+  EXPECT_GT(s["friction_angle_deg"].get<double>(), 0.0);
+  EXPECT_LT(s["friction_angle_deg"].get<double>(), 90.0);
+  EXPECT_DOUBLE_EQ(s["r2"].get<double>(), 1.0);  // a line through two points
+}
+
+TEST_F(SmallShearSeries, ServoHoldsTheNormalStressAndNoParticleLeaves) {
+  for (const char* load : {"load-25750Pa", "load-78750Pa"}) {
+    const auto s = read_json(out_ / load / "summary.json");
+    EXPECT_TRUE(s["consolidated"].get<bool>()) << load;
+    // Issue requirement: the servo holds the normal stress within 2 % on average while shearing.
+    EXPECT_LT(s["mean_normal_stress_error"].get<double>(), 0.02) << load;
+    EXPECT_EQ(s["particles_outside"].get<int>(), 0) << load;
+    EXPECT_GT(s["bonds_installed"].get<int>(), 0) << load;
+  }
+}
+
+TEST_F(SmallShearSeries, ShearForceIsPositiveAndStartsNearZero) {
+  std::vector<std::string> header;
+  const auto rows = read_rows(out_ / "load-78750Pa" / "curve.csv", header);
+  ASSERT_EQ(header[1], "shear_displacement");
+  ASSERT_EQ(header[2], "shear_force");
+  const auto s = read_json(out_ / "load-78750Pa" / "summary.json");
+  const double strength_force = s["shear_strength"].get<double>() * 0.06 * 0.06;
+  ASSERT_GT(strength_force, 0.0);
+  // First row: forces from positions before the lower half moved. What remains is the
+  // imbalance of the lateral pressures on its two x faces, small against the strength.
+  EXPECT_EQ(rows.front()[1], 0.0);
+  EXPECT_LT(std::abs(rows.front()[2]), 0.2 * strength_force);
+  // Pulling the lower half in +x is resisted: the pull needed is positive once it moves.
+  for (const auto& r : rows)
+    if (r[1] > 0.0005) EXPECT_GT(r[2], 0.0) << "at " << r[1];
+}
+
+TEST_F(SmallShearSeries, ResumeReusesFinishedLoadsAndRefusesAFinishedSeries) {
+  // A finished series is not overwritten without --force.
+  CliResult r = run_colza("run shear-series --quiet --config " + kConfig + " --out " + out_.string());
+  EXPECT_EQ(r.exit_code, 2);
+  // Copy the series, drop its summary and one load (as if stopped), and run again.
+  const fs::path resumed = scratch_dir("small-shear-resumed");
+  fs::copy(out_, resumed, fs::copy_options::recursive);
+  fs::remove(resumed / "summary.json");
+  fs::remove_all(resumed / "load-78750Pa");
+  r = run_colza("run shear-series --quiet --config " + kConfig + " --out " + resumed.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const auto a = read_json(out_ / "summary.json");
+  const auto b = read_json(resumed / "summary.json");
+  EXPECT_TRUE(b["loads"][0]["reused"].get<bool>());
+  EXPECT_FALSE(b["loads"][1]["reused"].get<bool>());
+  // Same config + same seed = same result bit for bit: the recomputed load is identical.
+  EXPECT_EQ(a["loads"][1]["shear_strength"].get<double>(), b["loads"][1]["shear_strength"].get<double>());
+  EXPECT_EQ(read_file(out_ / "load-78750Pa" / "curve.csv"), read_file(resumed / "load-78750Pa" / "curve.csv"));
+}
+
+TEST(ShearBox, FrictionlessBondFreeSampleHasAMuchLowerFrictionAngle) {
+  // Without particle friction and bonds, spheres roll and slide freely: the angle left
+  // comes from interlocking alone and must be far below the frictional sample's.
+  const std::string common = " --quiet --config " + kConfig + " --set contact.bond=none";
+  const fs::path frictional = scratch_dir("shear-frictional"), frictionless = scratch_dir("shear-frictionless");
+  CliResult r = run_colza("run shear-series" + common + " --out " + frictional.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  r = run_colza("run shear-series" + common + " --set particle.friction=0 --set wall.friction=0 --out " + frictionless.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const double phi_frictional = read_json(frictional / "summary.json")["friction_angle_deg"].get<double>();
+  const double phi_frictionless = read_json(frictionless / "summary.json")["friction_angle_deg"].get<double>();
+  EXPECT_LT(phi_frictionless, phi_frictional - 5.0) << phi_frictionless << " vs " << phi_frictional;
+}
+
+TEST(ShearBox, SingleLoadRunAndItsErrors) {
+  const fs::path out = scratch_dir("shear-single");
+  CliResult r = run_colza("run shear --quiet --config " + kConfig + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);  // --normal-stress missing
+  EXPECT_NE(r.stderr_text.find("--normal-stress"), std::string::npos) << r.stderr_text;
+  r = run_colza("run shear --quiet --normal-stress 40000 --config " + kConfig + " --set shear_box.shear_plane=0.05 --out " +
+                out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("shear_box.shear_plane"), std::string::npos) << r.stderr_text;
+  r = run_colza("run shear --quiet --normal-stress 40000 --config " + kConfig + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const auto s = read_json(out / "summary.json");
+  EXPECT_DOUBLE_EQ(s["normal_stress"].get<double>(), 40000.0);
+  EXPECT_GT(s["shear_strength"].get<double>(), 0.0);
+  EXPECT_TRUE(fs::exists(out / "packing.txt"));
+}
