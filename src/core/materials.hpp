@@ -10,8 +10,8 @@ namespace colza {
 // How entity stiffnesses become contact stiffnesses.
 enum class StiffnessRule {
   kSeries,   // Kn = kn1 kn2 / (kn1 + kn2), same for Ks (PFC3D 4 linear model)
-  kContact,  // the entity numbers are the contact stiffnesses; for a pair of different
-             // entities the series rule would be ambiguous, so both must agree (or a wall's value is used)
+  kContact,  // the entity numbers are the contact stiffnesses: particle-wall contacts take the
+             // wall's numbers; two particle materials with different numbers take the smaller
 };
 const char* to_string(StiffnessRule rule);
 

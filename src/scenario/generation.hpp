@@ -1,7 +1,7 @@
 // Seeded random non-overlapping placement of spheres (physics.md section 4).
 // Diameters are uniform on [d_min, d_max]; centres uniform in the region, rejected if the
 // sphere would cross the region's boundary or overlap an earlier sphere (random sequential
-// addition). Boost.Random (mt19937 + uniform_real_distribution) is used because its output
+// addition). Boost.Random (mt19937_64 + uniform_real_distribution) is used because its output
 // is specified exactly, so the same seed gives the same packing on every machine.
 #pragma once
 #include <cstdint>
