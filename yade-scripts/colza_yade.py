@@ -42,6 +42,11 @@
 #     exactly like colza's observer (no gravity in the forces).
 #
 # Only single-threaded YADE (-j 1) repeats itself bit for bit.
+#
+# Known residual differences (crosscheck/README.md): YADE turns the stored shear force about
+# the previous normal (dt/2 (w1 + w2) . n_old), colza about the new one; a bond broken in shear
+# while in tension gets no normal force in YADE in that step. Everything else agrees to
+# rounding in the micro scenes.
 import math
 import os
 import sys

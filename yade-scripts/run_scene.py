@@ -59,7 +59,7 @@ def main(argv):
     names = scene_columns(rec, len(m.walls))
     rows = []
     g = c["integration"]["gravity"]
-    law_names = ("law_pp", "law_pw")
+    laws = []
 
     def record():
         n = O.iter
@@ -87,7 +87,7 @@ def main(argv):
             ph = inter.phys
             en += 0.5 * ph.normalForce.squaredNorm() / ph.kn
             es += 0.5 * ph.shearForce.squaredNorm() / ph.ks
-        slip = sum(e.plasticDissipation() for e in O.engines[[isinstance(x, InteractionLoop) for x in O.engines].index(True)].lawDispatcher.functors)
+        slip = sum(law.plasticDissipation() for law in laws)
         row += [contacts, bonds, kin, grav, en, es, slip, math.nan, math.nan, math.nan]
         rows.append(row)
 
@@ -95,7 +95,8 @@ def main(argv):
     m.build_engines("RECORD()")
     loop = [e for e in O.engines if isinstance(e, InteractionLoop)][0]
     for law in loop.lawDispatcher.functors:
-        law.traceEnergy = True
+        law.traceEnergy = True  # slip dissipation, same bookkeeping as colza's slip_dissipated
+        laws.append(law)
     installed = 0
     ct = c["contact"]
     if ct["bond"] == "contact_bond" and ct["bond_install"] in ("before_loading", "after_settling"):

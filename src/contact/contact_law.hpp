@@ -12,7 +12,8 @@ struct ContactKinematics {
   Vec3 normal;           // unit normal n from body 1 to body 2
   double overlap;        // un = R1 + R2 - |x2 - x1| (sphere-wall: R - distance), > 0 touching (m)
   Vec3 shear_increment;  // dus = (vr - (vr.n) n) dt, vr = velocity of 2 relative to 1 at c (m)
-  double twist_angle;    // dt/2 (w1 + w2) . n_new (rad): spin of the pair about the normal
+  double twist_angle;    // dt/2 (w1 + w2) . n_old (rad): spin of the pair about the PREVIOUS normal
+                         // (YADE ScGeom::precompute computes it before updating the normal)
 };
 
 enum class ContactEvent : std::uint8_t {
@@ -74,7 +75,7 @@ inline ContactOutcome evaluate_contact(const Normal& normal_law, const Tangentia
   Vec3 fs = h.shear_force;
   if (!fresh) {
     fs -= fs.cross(h.normal.cross(k.normal));
-    fs -= fs.cross(k.twist_angle * k.normal);
+    fs -= fs.cross(k.twist_angle * h.normal);  // twist about the previous normal, as YADE
   }
   // Step 3: trial shear force from the shear displacement increment.
   tangential_law.increment(p, fs, k.shear_increment);
@@ -86,11 +87,17 @@ inline ContactOutcome evaluate_contact(const Normal& normal_law, const Tangentia
     return out;
   }
   if (bond_state != BondState::kHolds) out.slip_dissipation = tangential_law.limit(p, fn, fs);
-  if (bond_state == BondState::kBrokeShear) out.event = ContactEvent::kBondBrokeShear;
+  // A bond broken in shear while in tension leaves an unbonded contact without overlap:
+  // it carries no normal force (step 4) and is removed on the next step (YADE does the same).
+  double fn_applied = fn;
+  if (bond_state == BondState::kBrokeShear) {
+    out.event = ContactEvent::kBondBrokeShear;
+    if (fn < 0.0) fn_applied = 0.0;
+  }
   h.shear_force = fs;
   h.normal = k.normal;
-  h.normal_force = fn;
-  out.force_on_2 = fn * k.normal + fs;  // step 6
+  h.normal_force = fn_applied;
+  out.force_on_2 = fn_applied * k.normal + fs;  // step 6
   out.carries_force = true;
   return out;
 }

@@ -64,7 +64,7 @@ ForceLoopTotals force_loop(const Normal& normal_law, const Tangential& tangentia
     const Vec3 rel_vel = (p.velocity[j] + p.angular_velocity[j].cross(arm_j)) -
                          (p.velocity[i] + p.angular_velocity[i].cross(arm_i));
     k.shear_increment = (rel_vel - rel_vel.dot(k.normal) * k.normal) * dt;
-    k.twist_angle = half_dt * (p.angular_velocity[i] + p.angular_velocity[j]).dot(k.normal);
+    k.twist_angle = half_dt * (p.angular_velocity[i] + p.angular_velocity[j]).dot(h.normal);  // previous normal (zero for a new contact)
     const PairParameters& q = pairs.particle_particle(p.material[i], p.material[j]);
     const double stored_before = h.touching ? normal_law.energy(q, h.normal_force) + tangential_law.energy(q, h.shear_force) : 0.0;
     const ContactOutcome out = evaluate_contact(normal_law, tangential_law, bond_law, q, k, h, bond_new_contacts);
@@ -103,7 +103,7 @@ ForceLoopTotals force_loop(const Normal& normal_law, const Tangential& tangentia
     const Vec3 arm = g.point - p.position[i];
     const Vec3 rel_vel = (p.velocity[i] + p.angular_velocity[i].cross(arm)) - wall.velocity;
     k.shear_increment = (rel_vel - rel_vel.dot(k.normal) * k.normal) * dt;
-    k.twist_angle = half_dt * p.angular_velocity[i].dot(k.normal);
+    k.twist_angle = half_dt * p.angular_velocity[i].dot(h.normal);  // previous normal
     const PairParameters& q = pairs.particle_wall(p.material[i], wall.material);
     const ContactOutcome out = evaluate_contact(normal_law, tangential_law, NoBond{}, q, k, h, false);
     if (!out.carries_force) continue;
