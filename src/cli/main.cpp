@@ -7,6 +7,7 @@
 #include <omp.h>
 #endif
 
+#include "cli/calibrate_command.hpp"
 #include "cli/run_commands.hpp"
 #include "core/version.hpp"
 
@@ -35,6 +36,19 @@ int main(int argc, char** argv) {
   run->add_option("--jobs", opt.jobs, "shear-series: loads run concurrently")->check(CLI::PositiveNumber);
   run->add_flag("--quiet", opt.quiet, "no progress display");
 
+  colza::CalibrateOptions cal;
+  CLI::App* calibrate = app.add_subcommand("calibrate", "calibrate micro-parameters to measured data (paper sections 3.2-3.3)");
+  calibrate->add_option("stage", cal.stage, "density | compression | shear")
+      ->required()
+      ->check(CLI::IsMember({"density", "compression", "shear"}));
+  calibrate->add_option("--spec", cal.spec_path, "calibration spec (TOML, see data/calibration/)")->required();
+  calibrate->add_option("--out", cal.out_dir, "output directory (design runs are kept and reused in DIR/runs)")->required();
+  calibrate->add_option("--mode", cal.mode, "paper (fixed design, default) | sequential (trust-region refinement)")
+      ->check(CLI::IsMember({"paper", "sequential"}));
+  calibrate->add_option("--jobs", cal.jobs, "design runs run concurrently")->check(CLI::PositiveNumber);
+  calibrate->add_flag("--force", cal.force, "replace an earlier calibration result in --out (finished runs are still reused)");
+  calibrate->add_flag("--quiet", cal.quiet, "no per-run lines");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -52,6 +66,7 @@ int main(int argc, char** argv) {
 #endif
   try {
     if (run->parsed()) return colza::run_command(opt);
+    if (calibrate->parsed()) return colza::calibrate_command(cal);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "colza: internal error: %s\n", e.what());
     return 1;

@@ -1,0 +1,419 @@
+#include "calibration/calibrate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <numeric>
+#include <thread>
+
+namespace colza::calibration {
+
+Eigen::VectorXd Problem::lower() const {
+  Eigen::VectorXd v(parameters.size());
+  for (std::size_t j = 0; j < parameters.size(); ++j) v[j] = parameters[j].lower;
+  return v;
+}
+
+Eigen::VectorXd Problem::upper() const {
+  Eigen::VectorXd v(parameters.size());
+  for (std::size_t j = 0; j < parameters.size(); ++j) v[j] = parameters[j].upper;
+  return v;
+}
+
+namespace {
+
+std::string fmt(double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
+
+std::string point_text(const Problem& p, const Eigen::VectorXd& x) {
+  std::string s = "(";
+  for (std::size_t j = 0; j < p.parameters.size(); ++j) s += (j ? ", " : "") + p.parameters[j].name + " = " + fmt(x[j]);
+  return s + ")";
+}
+
+Eigen::VectorXd evaluate_surfaces(const std::vector<ResponseSurface>& s, const Eigen::VectorXd& x) {
+  Eigen::VectorXd y(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) y[i] = s[i].predict(x);
+  return y;
+}
+
+Eigen::MatrixXd surfaces_jacobian(const std::vector<ResponseSurface>& s, const Eigen::VectorXd& x) {
+  Eigen::MatrixXd J(s.size(), x.size());
+  for (std::size_t i = 0; i < s.size(); ++i) J.row(i) = s[i].gradient(x).transpose();
+  return J;
+}
+
+Eigen::VectorXd target_values(const Problem& p) {
+  Eigen::VectorXd t(p.targets.size());
+  for (std::size_t i = 0; i < p.targets.size(); ++i) t[i] = p.targets[i].value;
+  return t;
+}
+
+Eigen::VectorXd target_sigmas(const Problem& p) {
+  Eigen::VectorXd t(p.targets.size());
+  for (std::size_t i = 0; i < p.targets.size(); ++i) t[i] = p.targets[i].uncertainty;
+  return t;
+}
+
+Eigen::MatrixXd stack(const std::vector<Run>& runs, const std::vector<std::size_t>& idx, bool outputs) {
+  const auto& first = outputs ? runs[idx[0]].y : runs[idx[0]].x;
+  Eigen::MatrixXd m(idx.size(), first.size());
+  for (std::size_t r = 0; r < idx.size(); ++r) m.row(r) = (outputs ? runs[idx[r]].y : runs[idx[r]].x).transpose();
+  return m;
+}
+
+std::vector<ResponseSurface> fit_surfaces(const Problem& p, const std::vector<Run>& runs,
+                                          const std::vector<std::size_t>& idx, SurfaceKind kind) {
+  const Eigen::MatrixXd X = stack(runs, idx, false), Y = stack(runs, idx, true);
+  const ParameterScaling scaling = ParameterScaling::from_bounds(p.lower(), p.upper());
+  std::vector<ResponseSurface> s;
+  for (std::size_t i = 0; i < p.targets.size(); ++i) {
+    try {
+      s.push_back(ResponseSurface::fit(X, Y.col(static_cast<Eigen::Index>(i)), kind, scaling));
+    } catch (const SurfaceError& e) {
+      throw CalibrationError("design", std::string("cannot fit the response surface for ") + p.targets[i].name + ": " +
+                                           e.what());
+    }
+  }
+  return s;
+}
+
+// Fills the solution's Jacobian, predicted targets and parameter uncertainties.
+void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>& s, CalibrationResult& r) {
+  const Eigen::Index n = static_cast<Eigen::Index>(p.parameters.size());
+  r.jacobian = surfaces_jacobian(s, r.solution);
+  r.predicted = evaluate_surfaces(s, r.solution);
+  const Eigen::VectorXd sig_t = target_sigmas(p);
+  Eigen::VectorXd sig_s(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) sig_s[i] = s[i].residual_std();
+  const Eigen::VectorXd w = sig_t.array().square().inverse();
+  const Eigen::MatrixXd JtW = r.jacobian.transpose() * w.asDiagonal();
+  const Eigen::MatrixXd normal = JtW * r.jacobian;
+  Eigen::MatrixXd G;
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(normal);
+  if (lu.rank() < n) {
+    r.warnings.push_back("the fitted surfaces are (nearly) flat in some parameter at the solution: the parameter is not "
+                         "determined by the targets; its uncertainty is reported as infinite");
+    const double inf = std::numeric_limits<double>::infinity();
+    r.sigma_target = r.sigma_surface = r.sigma = Eigen::VectorXd::Constant(n, inf);
+    return;
+  }
+  G = lu.solve(JtW);  // dx = G dy (= J^-1 for a square system)
+  const Eigen::MatrixXd cov_t = G * sig_t.array().square().matrix().asDiagonal() * G.transpose();
+  const Eigen::MatrixXd cov_s = G * sig_s.array().square().matrix().asDiagonal() * G.transpose();
+  r.sigma_target = cov_t.diagonal().cwiseSqrt();
+  r.sigma_surface = cov_s.diagonal().cwiseSqrt();
+  r.sigma = (cov_t + cov_s).diagonal().cwiseSqrt();
+}
+
+void finish_validation(const Problem& p, CalibrationResult& r, const Eigen::VectorXd& achieved) {
+  r.achieved = achieved;
+  r.error = achieved - target_values(p);
+  r.within_uncertainty = normalised_misfit(p, achieved) <= 1.0;
+}
+
+void surface_warnings(const Problem& p, const std::vector<ResponseSurface>& s, std::vector<std::string>& w) {
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i].degrees_of_freedom() == 0)
+      w.push_back("the surface for " + p.targets[i].name + " passes exactly through its " +
+                  std::to_string(s[i].points()) + " points (no residual degree of freedom): its error is unknown and "
+                  "not included in the parameter uncertainty; add design points");
+    else if (s[i].r2() < 0.9)
+      w.push_back("the " + std::string(to_string(s[i].kind())) + " for " + p.targets[i].name + " fits poorly (R^2 = " +
+                  fmt(s[i].r2()) + "): narrow the design range around the expected solution, or use --mode sequential");
+  }
+}
+
+// Rounds to 10 significant digits: a point is stated the same way however it was computed
+// (0.3, not 0.30000000000000004), so it maps to the same DEM run fingerprint.
+Eigen::VectorXd round_point(Eigen::VectorXd x) {
+  for (Eigen::Index j = 0; j < x.size(); ++j) {
+    if (x[j] == 0.0 || !std::isfinite(x[j])) continue;
+    const double scale = std::pow(10.0, 9 - static_cast<int>(std::floor(std::log10(std::abs(x[j])))));
+    x[j] = std::round(x[j] * scale) / scale;
+  }
+  return x;
+}
+
+}  // namespace
+
+double normalised_misfit(const Problem& p, const Eigen::VectorXd& y) {
+  double m = 0.0;
+  for (std::size_t i = 0; i < p.targets.size(); ++i)
+    m = std::max(m, std::abs(y[i] - p.targets[i].value) / p.targets[i].uncertainty);
+  return m;
+}
+
+void validate_problem(const Problem& p, bool sequential) {
+  if (p.parameters.empty()) throw CalibrationError("parameters", "no parameters to calibrate");
+  if (p.targets.empty()) throw CalibrationError("targets", "no targets to calibrate against");
+  for (const auto& par : p.parameters)
+    if (!(par.upper > par.lower))
+      throw CalibrationError("parameters." + par.name, "the range [" + fmt(par.lower) + ", " + fmt(par.upper) +
+                                                           "] is empty: the design must vary every parameter");
+  for (const auto& t : p.targets) {
+    if (!std::isfinite(t.value)) throw CalibrationError(t.name, "the measured target is not a finite number");
+    if (!(t.uncertainty > 0.0)) throw CalibrationError(t.name, "the uncertainty must be > 0");
+  }
+  if (p.targets.size() < p.parameters.size())
+    throw CalibrationError("targets", "fewer targets (" + std::to_string(p.targets.size()) + ") than parameters (" +
+                                          std::to_string(p.parameters.size()) + "): the parameters are not determined");
+  const auto& pts = sequential ? p.sequential_start : p.design;
+  for (const auto& x : pts)
+    if (x.size() != static_cast<Eigen::Index>(p.parameters.size()))
+      throw CalibrationError("design", "a design point has " + std::to_string(x.size()) + " values for " +
+                                           std::to_string(p.parameters.size()) + " parameters");
+  const std::size_t need = p.parameters.size() + 1;
+  if (!sequential && p.design.size() < need)
+    throw CalibrationError("design", "too few design points for a plane in " + std::to_string(p.parameters.size()) +
+                                         " parameter(s): " + std::to_string(p.design.size()) + " given, at least " +
+                                         std::to_string(need) + " needed");
+  if (sequential && p.max_runs < static_cast<int>(need) + 1)
+    throw CalibrationError("sequential.max_runs", "the budget must allow the " + std::to_string(need) +
+                                                      " start points and at least one refinement run");
+}
+
+std::vector<Eigen::VectorXd> evaluate_batch(const ForwardModel& model, const std::vector<Eigen::VectorXd>& points,
+                                            int jobs) {
+  std::vector<Eigen::VectorXd> out(points.size());
+  std::mutex mutex;
+  std::exception_ptr failure;
+  std::size_t next = 0;
+  auto worker = [&]() {
+    while (true) {
+      std::size_t k;
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (next >= points.size() || failure) return;
+        k = next++;
+      }
+      try {
+        Eigen::VectorXd y = model(points[k]);
+        std::lock_guard<std::mutex> lock(mutex);
+        out[k] = std::move(y);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  };
+  const int n = std::max(1, std::min<int>(jobs, static_cast<int>(points.size())));
+  std::vector<std::thread> pool;
+  for (int j = 1; j < n; ++j) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  return out;
+}
+
+Eigen::VectorXd solve_on_surfaces(const std::vector<ResponseSurface>& s, const Problem& p, const Eigen::VectorXd& lower,
+                                  const Eigen::VectorXd& upper, const std::vector<Eigen::VectorXd>& starts,
+                                  bool require_reach) {
+  const ParameterScaling sc = ParameterScaling::from_bounds(p.lower(), p.upper());
+  const Eigen::VectorXd t = target_values(p), sig = target_sigmas(p);
+  const Eigen::VectorXd ulo = sc.to_unit(lower), uhi = sc.to_unit(upper);
+  auto residual = [&](const Eigen::VectorXd& u) {
+    return Eigen::VectorXd((evaluate_surfaces(s, sc.from_unit(u)) - t).cwiseQuotient(sig));
+  };
+  auto clamp = [&](Eigen::VectorXd u) {
+    for (Eigen::Index j = 0; j < u.size(); ++j) u[j] = std::clamp(u[j], ulo[j], uhi[j]);
+    return u;
+  };
+  // Projected Levenberg-Marquardt on the weighted residual r(u) = (f(x(u)) - t) / sigma.
+  auto solve_from = [&](Eigen::VectorXd u) {
+    u = clamp(u);
+    Eigen::VectorXd r = residual(u);
+    double cost = r.squaredNorm(), lambda = 1e-3;
+    for (int it = 0; it < 200 && cost > 1e-28; ++it) {
+      const Eigen::MatrixXd J =
+          sig.cwiseInverse().asDiagonal() * surfaces_jacobian(s, sc.from_unit(u)) * sc.half.asDiagonal();
+      const Eigen::MatrixXd JtJ = J.transpose() * J;
+      const Eigen::VectorXd g = J.transpose() * r;
+      Eigen::MatrixXd A = JtJ;
+      A.diagonal().array() += lambda * (JtJ.diagonal().array() + 1e-12);
+      const Eigen::VectorXd un = clamp(u - A.ldlt().solve(g));
+      const Eigen::VectorXd rn = residual(un);
+      const double cn = rn.squaredNorm();
+      if (cn < cost) {
+        const bool small = (un - u).norm() < 1e-13;
+        u = un, r = rn, cost = cn, lambda = std::max(lambda / 3.0, 1e-12);
+        if (small) break;
+      } else {
+        lambda *= 4.0;
+        if (lambda > 1e12) break;
+      }
+    }
+    return std::make_pair(cost, u);
+  };
+  std::vector<Eigen::VectorXd> all = starts;
+  all.push_back(0.5 * (lower + upper));
+  double best_cost = std::numeric_limits<double>::infinity();
+  Eigen::VectorXd best_u;
+  for (const auto& x0 : all) {
+    const auto [c, u] = solve_from(sc.to_unit(x0));
+    if (c < best_cost) best_cost = c, best_u = u;
+  }
+  const Eigen::VectorXd x = sc.from_unit(best_u);
+  if (require_reach) {
+    const Eigen::VectorXd y = evaluate_surfaces(s, x);
+    for (std::size_t i = 0; i < p.targets.size(); ++i) {
+      if (std::abs(y[i] - t[i]) <= sig[i]) continue;
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (const auto& xs : all) {
+        (void)xs;
+      }
+      // Range of the surface over the box corners (exact for a plane).
+      const std::size_t n = p.parameters.size();
+      for (std::size_t mask = 0; mask < (std::size_t{1} << n); ++mask) {
+        Eigen::VectorXd c(n);
+        for (std::size_t j = 0; j < n; ++j) c[j] = (mask >> j & 1) ? upper[j] : lower[j];
+        const double v = s[i].predict(c);
+        lo = std::min(lo, v), hi = std::max(hi, v);
+      }
+      throw CalibrationError(p.targets[i].name,
+                             "the measured " + p.targets[i].name + " = " + fmt(t[i]) + " +/- " + fmt(sig[i]) + " " +
+                                 p.targets[i].unit + " is outside what the design can reach: inside the bounds " +
+                                 point_text(p, lower) + " .. " + point_text(p, upper) + " the surfaces get at best " +
+                                 fmt(y[i]) + " (at " + point_text(p, x) + "; surface range over the box corners " +
+                                 fmt(lo) + " .. " + fmt(hi) + "). Widen or move the design range, or check the measured value");
+    }
+  }
+  return x;
+}
+
+CalibrationResult calibrate_paper(const Problem& p, const ForwardModel& model, const LoopOptions& opt) {
+  validate_problem(p, false);
+  CalibrationResult r;
+  r.mode = "paper";
+  const std::vector<Eigen::VectorXd> ys = evaluate_batch(model, p.design, opt.jobs);
+  std::vector<std::size_t> idx;
+  for (std::size_t k = 0; k < p.design.size(); ++k) {
+    r.runs.push_back({p.design[k], ys[k], "design", 0});
+    idx.push_back(k);
+    if (opt.on_run) opt.on_run(r.runs.back());
+  }
+  r.surfaces = fit_surfaces(p, r.runs, idx, p.surface);
+  r.surface_points = idx;
+  surface_warnings(p, r.surfaces, r.warnings);
+  r.solution = round_point(solve_on_surfaces(r.surfaces, p, p.lower(), p.upper(), p.design, true));
+  propagate_uncertainty(p, r.surfaces, r);
+  r.runs.push_back({r.solution, model(r.solution), "validation", 1});
+  if (opt.on_run) opt.on_run(r.runs.back());
+  finish_validation(p, r, r.runs.back().y);
+  r.iterations = 1;
+  if (!r.within_uncertainty)
+    r.warnings.push_back("the validation run misses the measurement by " + fmt(normalised_misfit(p, r.achieved)) +
+                         " standard uncertainties: the surface is not accurate enough near the solution; use "
+                         "--mode sequential or add design points near the solution");
+  return r;
+}
+
+CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& model, const LoopOptions& opt) {
+  validate_problem(p, true);
+  CalibrationResult r;
+  r.mode = "sequential";
+  const std::size_t n = p.parameters.size();
+  const Eigen::VectorXd lo = p.lower(), hi = p.upper();
+  const ParameterScaling sc = ParameterScaling::from_bounds(lo, hi);
+  std::vector<Eigen::VectorXd> start = p.sequential_start;
+  if (start.empty()) {
+    // Centre of the range and one step of a quarter range along each parameter.
+    start.push_back(sc.mid);
+    for (std::size_t j = 0; j < n; ++j) {
+      Eigen::VectorXd x = sc.mid;
+      x[j] += 0.5 * sc.half[j];
+      start.push_back(x);
+    }
+    for (auto& x : start) x = round_point(x);
+  }
+  const std::vector<Eigen::VectorXd> ys = evaluate_batch(model, start, opt.jobs);
+  for (std::size_t k = 0; k < start.size(); ++k) {
+    r.runs.push_back({start[k], ys[k], "design", 0});
+    if (opt.on_run) opt.on_run(r.runs.back());
+  }
+  auto misfit = [&](std::size_t k) { return normalised_misfit(p, r.runs[k].y); };
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < r.runs.size(); ++k)
+    if (misfit(k) < misfit(best)) best = k;
+  double radius = 0.5;  // trust-region half width in scaled units (1 = half the range)
+  const std::size_t neighbours = n + 2;  // plane (n + 1 terms) with one residual degree of freedom
+  int iteration = 0;
+  while (misfit(best) > 1.0 && static_cast<int>(r.runs.size()) < p.max_runs) {
+    ++iteration;
+    // The points nearest the current best (scaled distance); more if they do not determine a plane.
+    std::vector<std::size_t> order(r.runs.size());
+    std::iota(order.begin(), order.end(), 0);
+    const Eigen::VectorXd ub = sc.to_unit(r.runs[best].x);
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return (sc.to_unit(r.runs[a].x) - ub).norm() < (sc.to_unit(r.runs[b].x) - ub).norm();
+    });
+    std::vector<ResponseSurface> s;
+    std::vector<std::size_t> idx;
+    for (std::size_t k = std::min(order.size(), neighbours); k <= order.size(); ++k) {
+      idx.assign(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k));
+      try {
+        s = fit_surfaces(p, r.runs, idx, SurfaceKind::kPlane);
+        break;
+      } catch (const CalibrationError&) {
+        s.clear();
+      }
+    }
+    if (s.empty()) throw CalibrationError("sequential.start", "the start points do not determine a plane: they must not be collinear");
+    const Eigen::VectorXd tlo = lo.cwiseMax(r.runs[best].x - radius * sc.half);
+    const Eigen::VectorXd thi = hi.cwiseMin(r.runs[best].x + radius * sc.half);
+    Eigen::VectorXd x = round_point(solve_on_surfaces(s, p, tlo, thi, {r.runs[best].x}, false));
+    // A point already evaluated brings nothing new: shrink and retry (or give up).
+    bool duplicate = false;
+    for (const auto& run : r.runs) duplicate = duplicate || (sc.to_unit(run.x) - sc.to_unit(x)).norm() < 1e-9;
+    r.surfaces = s;
+    r.surface_points = idx;
+    if (duplicate) {
+      radius *= 0.5;
+      if (radius < 1e-4) {
+        r.warnings.push_back("the refinement stalled (the surrogate's solution repeats an evaluated point)");
+        break;
+      }
+      continue;
+    }
+    r.runs.push_back({x, model(x), "refinement", iteration});
+    if (opt.on_run) opt.on_run(r.runs.back());
+    const std::size_t k = r.runs.size() - 1;
+    if (misfit(k) < misfit(best)) {
+      best = k;
+      radius = std::min(2.0 * radius, 2.0);
+    } else {
+      radius *= 0.5;
+    }
+  }
+  r.iterations = iteration;
+  r.solution = r.runs[best].x;
+  if (r.surfaces.empty()) {  // converged on the start design: fit it for the uncertainty
+    std::vector<std::size_t> idx(r.runs.size());
+    std::iota(idx.begin(), idx.end(), 0);
+    r.surfaces = fit_surfaces(p, r.runs, idx, SurfaceKind::kPlane);
+    r.surface_points = idx;
+  }
+  r.runs[best].role = r.runs[best].role == "design" ? "design+validation" : "validation";
+  propagate_uncertainty(p, r.surfaces, r);
+  finish_validation(p, r, r.runs[best].y);
+  if (!r.within_uncertainty) {
+    // Is the target reachable at all inside the bounds (judged on the last local surfaces)?
+    try {
+      solve_on_surfaces(r.surfaces, p, lo, hi, {r.solution}, true);
+    } catch (const CalibrationError& e) {
+      r.warnings.push_back(std::string("judged on the last local planes: ") + e.what());
+    }
+    r.warnings.push_back("stopped after " + std::to_string(r.runs.size()) + " runs (sequential.max_runs = " +
+                         std::to_string(p.max_runs) + ") with the best run " + fmt(normalised_misfit(p, r.achieved)) +
+                         " standard uncertainties from the measurement: raise sequential.max_runs");
+  }
+  return r;
+}
+
+}  // namespace colza::calibration

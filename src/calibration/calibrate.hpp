@@ -1,0 +1,121 @@
+// The calibration loop, shared by the identity model (tests) and the DEM (the CLI):
+// a forward model maps a parameter vector to a target vector; the loop runs design points,
+// fits a response surface per target, solves surface(x) = measured target inside the
+// design's range and runs a validation evaluation at the solution.
+//
+//  * paper mode (rapeseed paper sections 2.2, 3.2, 3.3): a fixed design (e.g. 7 points in
+//    (kn_p, mu_pp), 5 points in (Cn, Cs)), one plane per target, solve, validate once.
+//  * sequential mode (trust region): start from n+1 points (the centre and one step per
+//    parameter), fit a plane on the points nearest the current best, solve inside
+//    [best - r, best + r] intersected with the bounds, evaluate the predicted solution (it
+//    is both a new design point and the validation run); stop when every target is hit
+//    within its measurement uncertainty or the run budget is spent. r doubles after an
+//    improvement and halves otherwise.
+//
+// Parameter uncertainty (first order): dx = G dy with G = (J^T W J)^-1 J^T W, J = dsurface/dx
+// at the solution, W = diag(1 / sigma_t^2), so cov(x) = G (S_t + S_s) G^T with
+// S_t = diag(sigma_target^2) (measurement) and S_s = diag(s_residual^2) (surface error).
+// For as many targets as parameters G = J^-1.
+#pragma once
+#include <Eigen/Dense>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "calibration/response_surface.hpp"
+
+namespace colza::calibration {
+
+struct Parameter {
+  std::string name;   // short name, e.g. "kn_p"
+  std::string key;    // config key the DEM sets, e.g. "particle.normal_stiffness"
+  std::string unit;
+  double lower = 0.0, upper = 0.0;  // bounds = the design's range unless the spec says otherwise
+};
+
+struct Target {
+  std::string name;   // e.g. "c1"
+  std::string unit;
+  double value = 0.0;
+  double uncertainty = 0.0;  // one standard deviation, > 0
+};
+
+struct Problem {
+  std::vector<Parameter> parameters;
+  std::vector<Target> targets;
+  std::vector<Eigen::VectorXd> design;           // paper mode: the design points
+  std::vector<Eigen::VectorXd> sequential_start;  // sequential mode: empty = centre + one step per parameter
+  SurfaceKind surface = SurfaceKind::kAuto;
+  int max_runs = 12;                              // sequential mode budget (design + refinement runs)
+  Eigen::VectorXd lower() const;
+  Eigen::VectorXd upper() const;
+};
+
+// The forward model: parameters (SI) -> targets (SI). Must be callable from several threads
+// at once (the DEM model is; the identity model is pure).
+using ForwardModel = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
+
+// A target the surfaces cannot reach inside the bounds, or a design that cannot be fitted.
+// `key` names what to change (the target or the design).
+class CalibrationError : public std::runtime_error {
+ public:
+  CalibrationError(std::string key, const std::string& reason) : std::runtime_error(reason), key_(std::move(key)) {}
+  const std::string& key() const { return key_; }
+
+ private:
+  std::string key_;
+};
+
+struct Run {
+  Eigen::VectorXd x, y;
+  std::string role;   // "design" | "refinement" | "validation"
+  int iteration = 0;
+};
+
+struct CalibrationResult {
+  std::string mode;                     // "paper" | "sequential"
+  Eigen::VectorXd solution;             // parameters (SI)
+  Eigen::VectorXd sigma_target;         // parameter std from the measurement uncertainty
+  Eigen::VectorXd sigma_surface;        // parameter std from the surfaces' residual error
+  Eigen::VectorXd sigma;                // combined
+  Eigen::MatrixXd jacobian;             // d surface / d x at the solution (targets x parameters)
+  Eigen::VectorXd predicted;            // surfaces at the solution
+  Eigen::VectorXd achieved;             // the validation run at the solution
+  Eigen::VectorXd error;                // achieved - measured
+  bool within_uncertainty = false;      // |error_i| <= uncertainty_i for all i
+  std::vector<Run> runs;                // every forward evaluation, in order
+  std::vector<ResponseSurface> surfaces;  // the surfaces used for the final solution
+  std::vector<std::size_t> surface_points;  // indices into runs the final surfaces were fitted on
+  int iterations = 0;
+  std::vector<std::string> warnings;
+  std::size_t forward_runs() const { return runs.size(); }
+};
+
+struct LoopOptions {
+  int jobs = 1;  // concurrent evaluations of a batch of design points
+  // Called after each evaluation (progress / logging); may be empty.
+  std::function<void(const Run&)> on_run;
+};
+
+// Evaluates every point, up to `jobs` at once; results in input order.
+std::vector<Eigen::VectorXd> evaluate_batch(const ForwardModel& model, const std::vector<Eigen::VectorXd>& points,
+                                            int jobs);
+
+// Solves surfaces(x) = targets (weighted least squares, projected Levenberg-Marquardt with
+// several starts) inside [lower, upper]. Throws CalibrationError if some target cannot be
+// reached within its uncertainty inside the bounds.
+Eigen::VectorXd solve_on_surfaces(const std::vector<ResponseSurface>& surfaces, const Problem& problem,
+                                  const Eigen::VectorXd& lower, const Eigen::VectorXd& upper,
+                                  const std::vector<Eigen::VectorXd>& starts, bool require_reach);
+
+// Checks the problem (sizes, bounds, uncertainties); throws CalibrationError.
+void validate_problem(const Problem& problem, bool sequential);
+
+CalibrationResult calibrate_paper(const Problem& problem, const ForwardModel& model, const LoopOptions& options);
+CalibrationResult calibrate_sequential(const Problem& problem, const ForwardModel& model, const LoopOptions& options);
+
+// Weighted misfit max_i |y_i - t_i| / sigma_i (<= 1: within the measurement uncertainty).
+double normalised_misfit(const Problem& problem, const Eigen::VectorXd& y);
+
+}  // namespace colza::calibration

@@ -1,0 +1,292 @@
+#include "calibration/dem_model.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "analysis/mohr_coulomb.hpp"
+#include "io/output_dir.hpp"
+#include "io/packing_file.hpp"
+#include "io/summary.hpp"
+#include "io/table.hpp"
+#include "scenario/oedometer.hpp"
+
+namespace colza::calibration {
+
+namespace fs = std::filesystem;
+
+std::string fingerprint_text(const std::string& text) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char ch : text) h = (h ^ ch) * 1099511628211ull;
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+namespace {
+
+std::string num17(double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.17g", v);
+  return b;
+}
+
+Scenario scenario_of(const Spec& s) { return s.stage == Stage::kShear ? Scenario::kShear : Scenario::kOedometer; }
+
+// The settled sample depends on everything but the bond strengths and the loads.
+std::string sample_fingerprint(const RunConfig& c) {
+  toml::table doc = toml::parse(c.resolved_toml);
+  if (auto* box = doc["shear_box"].as_table()) box->erase("normal_stresses");
+  if (auto* contact = doc["contact"].as_table()) contact->erase("contact_bond");
+  std::ostringstream text;
+  text << doc;
+  return fingerprint_text(text.str());
+}
+
+void write_text_atomically(const fs::path& file, const std::string& text) {
+  const fs::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream o(tmp);
+    o << text;
+    if (!o) throw std::runtime_error("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, file);
+}
+
+}  // namespace
+
+DemModel::DemModel(const Spec& spec, fs::path runs_dir, bool verbose)
+    : spec_(spec), runs_(std::move(runs_dir)), verbose_(verbose) {
+  fs::create_directories(runs_);
+}
+
+std::string DemModel::shared_packing_path() {
+  // Settled once at the centre of the design range, kept in runs/packing-<fp>/packing.txt.
+  std::lock_guard<std::mutex> lock(sample_mutex_);
+  if (!packing_path_.empty()) return packing_path_;
+  std::vector<std::string> o = spec_.model_set;
+  const Eigen::VectorXd mid = 0.5 * (spec_.problem.lower() + spec_.problem.upper());
+  for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j)
+    o.push_back(spec_.problem.parameters[j].key + "=" + num17(mid[j]));
+  const RunConfig c = load_run_config(Scenario::kOedometer, spec_.model_config, o);
+  packing_fp_ = fingerprint_text(c.resolved_toml);
+  const fs::path dir = runs_ / ("packing-" + packing_fp_);
+  const fs::path file = dir / "packing.txt";
+  if (!fs::exists(file)) {
+    fs::create_directories(dir);
+    Progress quiet(false);
+    const auto t0 = std::chrono::steady_clock::now();
+    const OedometerResult r = run_oedometer(c, quiet);
+    write_packing((dir / "packing.txt.tmp").string(), r.settled);
+    fs::rename(dir / "packing.txt.tmp", file);
+    write_text_atomically(dir / "config.toml", c.resolved_toml);
+    if (verbose_)
+      std::printf("  shared packing: %zu particles settled at the design centre (%.1f s) -> %s\n", r.particles,
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), file.c_str());
+  }
+  packing_path_ = file.string();
+  packing_note_ = "every run loads the packing settled once at the design centre: " + packing_path_;
+  return packing_path_;
+}
+
+RunConfig DemModel::config_for(const Eigen::VectorXd& x, std::string& fp) {
+  std::vector<std::string> o = spec_.model_set;
+  if (spec_.stage == Stage::kShear) {
+    std::string loads = "shear_box.normal_stresses=[";
+    for (std::size_t k = 0; k < spec_.loads.size(); ++k) loads += (k ? "," : "") + num17(spec_.loads[k]);
+    o.push_back(loads + "]");
+  }
+  for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j)
+    o.push_back(spec_.problem.parameters[j].key + "=" + num17(x[j]));
+  RunConfig c = load_run_config(scenario_of(spec_), spec_.model_config, o);
+  std::string text = c.resolved_toml;
+  if (spec_.shared_packing) {
+    c.oedometer.packing_file = shared_packing_path();
+    text += "\n# shared packing " + packing_fp_ + "\n";
+  }
+  fp = fingerprint_text(text);
+  return c;
+}
+
+std::shared_ptr<const ShearSample> DemModel::shear_sample(const RunConfig& c) {
+  // One settled sample per sample fingerprint, kept in runs/sample-<fp>/packing.txt; every
+  // design run starts from the packing file (identical start whether fresh or resumed).
+  std::lock_guard<std::mutex> lock(sample_mutex_);
+  const std::string fp = sample_fingerprint(c);
+  if (auto it = samples_.find(fp); it != samples_.end()) return it->second;
+  const fs::path dir = runs_ / ("sample-" + fp);
+  const fs::path file = dir / "packing.txt";
+  Progress quiet(false);
+  if (!fs::exists(file)) {
+    fs::create_directories(dir);
+    const auto t0 = std::chrono::steady_clock::now();
+    const ShearSample s = prepare_shear_sample(c, quiet);
+    write_packing((dir / "packing.txt.tmp").string(), s.particles);
+    fs::rename(dir / "packing.txt.tmp", file);
+    if (verbose_)
+      std::printf("  shear sample: %zu particles settled (%.1f s) -> %s\n", s.particles.size(),
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), file.c_str());
+  }
+  RunConfig from_file = c;
+  from_file.shear_box.packing_file = file.string();
+  auto sample = std::make_shared<const ShearSample>(prepare_shear_sample(from_file, quiet));
+  samples_[fp] = sample;
+  return sample;
+}
+
+nlohmann::json DemModel::run_oedometer_outputs(const RunConfig& c, const fs::path& dir, double& wall) {
+  Progress quiet(false);
+  const auto t0 = std::chrono::steady_clock::now();
+  const OedometerResult r = run_oedometer(c, quiet);
+  wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  nlohmann::json out = {{"bulk_density", r.bulk_density},
+                        {"particles", r.particles},
+                        {"settling_converged", r.settling.converged},
+                        {"max_force", r.max_force},
+                        {"stop_reason", r.stop_reason},
+                        {"fit_valid", r.fit.valid},
+                        {"fit_reached_force_max", r.fit.reached_force_max}};
+  if (r.fit.valid) {
+    out["c0"] = r.fit.fit.coefficients[0];
+    out["c1"] = r.fit.fit.coefficients[1];
+    out["c2"] = r.fit.fit.coefficients[2];
+    out["fit_r2"] = r.fit.fit.r2;
+  }
+  fs::create_directories(dir);
+  write_csv((dir / "curve.csv").string(), r.curve);
+  return out;
+}
+
+nlohmann::json DemModel::run_shear_outputs(const RunConfig& c, double& wall) {
+  const auto sample = shear_sample(c);
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<double> tau;
+  nlohmann::json loads = nlohmann::json::array();
+  for (double sigma : spec_.loads) {
+    Progress quiet(false);
+    const ShearLoadResult r = run_shear_load(c, *sample, sigma, quiet);
+    tau.push_back(r.shear_strength);
+    loads.push_back({{"normal_stress", sigma},
+                     {"shear_strength", r.shear_strength},
+                     {"peak_shear_stress", r.peak_shear_stress},
+                     {"consolidated", r.consolidated},
+                     {"mean_normal_stress_error", r.mean_normal_stress_error},
+                     {"particles_outside", r.particles_outside},
+                     {"bonds_installed", r.bonds_installed}});
+  }
+  wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const MohrCoulombFit mc = fit_mohr_coulomb(spec_.loads, tau);
+  return {{"cohesion", mc.cohesion},
+          {"tan_phi", mc.slope},
+          {"friction_angle_deg", mc.friction_angle_deg},
+          {"line_r2", mc.r2},
+          {"particles", sample->particles.size()},
+          {"loads", loads}};
+}
+
+Eigen::VectorXd DemModel::targets_from(const nlohmann::json& out, const std::string& id) const {
+  const auto& t = spec_.problem.targets;
+  Eigen::VectorXd y(t.size());
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!out.contains(t[i].name)) {
+      if (spec_.stage == Stage::kCompression)
+        throw CalibrationError("model.set", "DEM run " + id + " did not reach the fit range (largest force " +
+                                                std::to_string(out.value("max_force", 0.0)) +
+                                                " N): raise oedometer.stop_force / max_piston_travel or lower "
+                                                "oedometer.fit_force_max in [model] set");
+      throw CalibrationError("model", "DEM run " + id + " has no output " + t[i].name);
+    }
+    y[i] = out[t[i].name].get<double>();
+  }
+  return y;
+}
+
+Eigen::VectorXd DemModel::operator()(const Eigen::VectorXd& x) {
+  std::string fp;
+  const RunConfig c = config_for(x, fp);
+  const fs::path dir = runs_ / fp;
+  const fs::path summary = dir / "summary.json";
+  DemRunRecord rec;
+  rec.id = fp;
+  rec.x = x;
+  if (fs::exists(summary)) {
+    const auto s = nlohmann::json::parse(std::ifstream(summary));
+    if (s.value("fingerprint", "") == fp) {
+      rec.outputs = s["outputs"];
+      rec.reused = true;
+      rec.wall_seconds = s.value("wall_seconds", 0.0);
+    }
+  }
+  if (!rec.reused) {
+    double wall = 0.0;
+    nlohmann::json outputs;
+    if (spec_.stage == Stage::kShear) {
+      outputs = run_shear_outputs(c, wall);
+    } else {
+      // The curve is written into the staging folder's final place after the summary check.
+      const fs::path tmp = runs_ / (".tmp-" + fp);
+      fs::remove_all(tmp);
+      outputs = run_oedometer_outputs(c, tmp, wall);
+      OutputStaging out(dir, true);
+      fs::rename(tmp / "curve.csv", out.path("curve.csv"));
+      fs::remove_all(tmp);
+      nlohmann::json s = {{"fingerprint", fp}, {"stage", to_string(spec_.stage)}, {"outputs", outputs},
+                          {"wall_seconds", wall}, {"config_toml", c.resolved_toml}};
+      s["parameters"] = nlohmann::json::object();
+      for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j) s["parameters"][spec_.problem.parameters[j].key] = x[j];
+      if (spec_.shared_packing) s["packing_file"] = c.oedometer.packing_file;
+      write_json(out.path("summary.json"), s);
+      out.commit();
+    }
+    if (spec_.stage == Stage::kShear) {
+      OutputStaging out(dir, true);
+      nlohmann::json s = {{"fingerprint", fp}, {"stage", to_string(spec_.stage)}, {"outputs", outputs},
+                          {"wall_seconds", wall}, {"config_toml", c.resolved_toml}};
+      s["parameters"] = nlohmann::json::object();
+      for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j) s["parameters"][spec_.problem.parameters[j].key] = x[j];
+      write_json(out.path("summary.json"), s);
+      out.commit();
+    }
+    rec.outputs = outputs;
+    rec.wall_seconds = wall;
+  }
+  rec.y = targets_from(rec.outputs, fp);
+  if (verbose_) {
+    std::string line = "  run " + fp + ":";
+    for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j) {
+      char b[96];
+      std::snprintf(b, sizeof b, " %s = %.5g", spec_.problem.parameters[j].name.c_str(), x[j]);
+      line += b;
+    }
+    line += " ->";
+    for (std::size_t i = 0; i < spec_.problem.targets.size(); ++i) {
+      char b[96];
+      std::snprintf(b, sizeof b, " %s = %.5g", spec_.problem.targets[i].name.c_str(), rec.y[i]);
+      line += b;
+    }
+    char b[64];
+    std::snprintf(b, sizeof b, " (%.1f s%s)", rec.wall_seconds, rec.reused ? ", reused" : "");
+    std::printf("%s%s\n", line.c_str(), b);
+    std::fflush(stdout);
+  }
+  Eigen::VectorXd y = rec.y;
+  std::lock_guard<std::mutex> lock(mutex_);
+  records_.push_back(std::move(rec));
+  return y;
+}
+
+std::vector<DemRunRecord> DemModel::records() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return records_;
+}
+
+const DemRunRecord* DemModel::find(const Eigen::VectorXd& x) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (const auto& r : records_)
+    if (r.x.size() == x.size() && (r.x - x).norm() == 0.0) return &r;
+  return nullptr;
+}
+
+}  // namespace colza::calibration

@@ -1,0 +1,59 @@
+// The DEM as a calibration forward model: parameters -> targets by running colza's
+// oedometer (density: bulk density; compression: c1, c2 of F = c0 + c1 s + c2 s^2) or a
+// shear series over the spec's loads (shear: C and tan(Phi) of the Mohr-Coulomb line).
+// Every run is kept in <runs>/<fingerprint>/summary.json, the fingerprint being FNV-1a 64
+// of the run's full configuration as used (model config + spec overrides + parameters +
+// shared packing); a calibration started again reuses finished runs. Thread-safe.
+#pragma once
+#include <Eigen/Dense>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "calibration/spec.hpp"
+#include "scenario/shear_box.hpp"
+
+namespace colza::calibration {
+
+struct DemRunRecord {
+  std::string id;           // fingerprint = directory name under runs/
+  Eigen::VectorXd x, y;
+  bool reused = false;
+  double wall_seconds = 0;  // of the original run
+  nlohmann::json outputs;
+};
+
+class DemModel {
+ public:
+  DemModel(const Spec& spec, std::filesystem::path runs_dir, bool verbose);
+  Eigen::VectorXd operator()(const Eigen::VectorXd& x);
+  std::vector<DemRunRecord> records() const;
+  const DemRunRecord* find(const Eigen::VectorXd& x) const;
+  std::string shared_packing_note() const { return packing_note_; }
+
+ private:
+  RunConfig config_for(const Eigen::VectorXd& x, std::string& fingerprint);
+  nlohmann::json run_oedometer_outputs(const RunConfig& c, const std::filesystem::path& dir, double& wall);
+  nlohmann::json run_shear_outputs(const RunConfig& c, double& wall);
+  std::shared_ptr<const ShearSample> shear_sample(const RunConfig& c);
+  std::string shared_packing_path();
+  Eigen::VectorXd targets_from(const nlohmann::json& outputs, const std::string& id) const;
+
+  const Spec& spec_;
+  std::filesystem::path runs_;
+  bool verbose_;
+  mutable std::mutex mutex_;           // records_
+  std::mutex sample_mutex_;            // shared samples / packings are made once
+  std::vector<DemRunRecord> records_;
+  std::map<std::string, std::shared_ptr<const ShearSample>> samples_;
+  std::string packing_path_, packing_fp_, packing_note_;
+};
+
+// FNV-1a 64 of a text, as 16 hex digits.
+std::string fingerprint_text(const std::string& text);
+
+}  // namespace colza::calibration

@@ -1,0 +1,362 @@
+#include "calibration/spec.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "analysis/mohr_coulomb.hpp"
+#include "analysis/polyfit.hpp"
+#include "config/config_error.hpp"
+
+namespace colza::calibration {
+
+namespace fs = std::filesystem;
+
+const char* to_string(Stage s) {
+  switch (s) {
+    case Stage::kDensity: return "density";
+    case Stage::kCompression: return "compression";
+    case Stage::kShear: return "shear";
+  }
+  return "?";
+}
+
+namespace {
+
+std::string fmt(double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
+
+// Small typed access to one table of the spec, with unknown-key rejection.
+struct Node {
+  const std::string& file;
+  const toml::table* table;
+  std::string path;
+  mutable std::set<std::string> used;
+
+  std::string full(const std::string& k) const { return path.empty() ? k : path + "." + k; }
+  [[noreturn]] void fail(const std::string& k, const std::string& why) const { throw ConfigError(file, full(k), why); }
+  const toml::node* get(const std::string& k) const {
+    used.insert(k);
+    return table ? table->get(k) : nullptr;
+  }
+  bool has(const std::string& k) const { return table && table->contains(k); }
+  double number(const std::string& k) const {
+    const toml::node* n = get(k);
+    if (!n) fail(k, "missing (a number is required)");
+    if (auto v = n->value<double>()) {
+      if (!std::isfinite(*v)) fail(k, "must be a finite number");
+      return *v;
+    }
+    fail(k, "must be a number");
+  }
+  double number(const std::string& k, double fallback) const { return has(k) ? number(k) : (get(k), fallback); }
+  double positive(const std::string& k) const {
+    const double v = number(k);
+    if (!(v > 0.0)) fail(k, "must be > 0, got " + fmt(v));
+    return v;
+  }
+  std::string string(const std::string& k, const std::string& fallback, bool required = false) const {
+    const toml::node* n = get(k);
+    if (!n) {
+      if (required) fail(k, "missing (a string is required)");
+      return fallback;
+    }
+    if (auto v = n->value<std::string>()) return *v;
+    fail(k, "must be a string");
+  }
+  std::vector<double> numbers(const std::string& k) const {
+    const toml::node* n = get(k);
+    if (!n) return {};
+    const toml::array* a = n->as_array();
+    if (!a) fail(k, "must be an array of numbers");
+    std::vector<double> out;
+    for (const auto& e : *a) {
+      auto v = e.value<double>();
+      if (!v || !std::isfinite(*v)) fail(k, "must be an array of finite numbers");
+      out.push_back(*v);
+    }
+    return out;
+  }
+  std::vector<std::string> strings(const std::string& k) const {
+    const toml::node* n = get(k);
+    if (!n) return {};
+    const toml::array* a = n->as_array();
+    if (!a) fail(k, "must be an array of strings");
+    std::vector<std::string> out;
+    for (const auto& e : *a) {
+      auto v = e.value<std::string>();
+      if (!v) fail(k, "must be an array of strings");
+      out.push_back(*v);
+    }
+    return out;
+  }
+  Node child(const std::string& k) const {
+    const toml::node* n = get(k);
+    if (n && !n->is_table()) fail(k, "must be a table");
+    return Node{file, n ? n->as_table() : nullptr, full(k), {}};
+  }
+  void reject_unknown() const {
+    if (!table) return;
+    for (const auto& [key, value] : *table)
+      if (!used.count(std::string(key.str())))
+        throw ConfigError(file, full(std::string(key.str())), "unknown key (misspelt? it does not belong in this table)");
+  }
+};
+
+std::string resolve(const std::string& spec_file, const std::string& value) {
+  fs::path p(value);
+  if (p.is_relative()) p = fs::path(spec_file).parent_path() / p;
+  return p.lexically_normal().string();
+}
+
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> cells;
+  std::istringstream s(line);
+  for (std::string c; std::getline(s, c, ',');) {
+    const auto b = c.find_first_not_of(" \t\r\"");
+    const auto e = c.find_last_not_of(" \t\r\"");
+    cells.push_back(b == std::string::npos ? "" : c.substr(b, e - b + 1));
+  }
+  return cells;
+}
+
+}  // namespace
+
+std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const std::vector<std::string>& columns,
+                                                  const std::string& spec_file, const std::string& key) {
+  std::ifstream in(csv);
+  if (!in) throw ConfigError(spec_file, key, "cannot open the measured data file " + csv);
+  std::string line;
+  // Header: the first line that is not empty and not a '#' comment.
+  while (std::getline(in, line) && (line.find_first_not_of(" \t\r") == std::string::npos || line[0] == '#')) {
+  }
+  const std::vector<std::string> header = split_csv_line(line);
+  std::vector<std::size_t> index;
+  for (const auto& c : columns) {
+    const auto it = std::find(header.begin(), header.end(), c);
+    if (it == header.end())
+      throw ConfigError(spec_file, key, csv + ": no column \"" + c + "\" in the header line \"" + line + "\"");
+    index.push_back(static_cast<std::size_t>(it - header.begin()));
+  }
+  std::vector<std::vector<double>> out(columns.size());
+  std::size_t row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    if (line.find_first_not_of(" \t\r") == std::string::npos || line[0] == '#') continue;
+    const auto cells = split_csv_line(line);
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+      double v = 0.0;
+      try {
+        std::size_t used = 0;
+        v = std::stod(cells.at(index[k]), &used);
+        if (used != cells[index[k]].size() || !std::isfinite(v)) throw std::invalid_argument("");
+      } catch (const std::exception&) {
+        throw ConfigError(spec_file, key, csv + ": line " + std::to_string(row) + ": column \"" + columns[k] +
+                                              "\" is not a finite number");
+      }
+      out[k].push_back(v);
+    }
+  }
+  return out;
+}
+
+Spec read_spec(const std::string& path) {
+  Spec s;
+  s.file = path;
+  toml::table doc;
+  try {
+    doc = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    if (!fs::exists(path)) throw ConfigError(path, "", "cannot open the calibration spec");
+    std::ostringstream m;
+    m << "TOML syntax error: " << e.description() << " (line " << e.source().begin.line << ")";
+    throw ConfigError(path, "", m.str());
+  }
+  const Node root{path, &doc, "", {}};
+  const std::string stage = root.string("stage", "", true);
+  if (stage == "density") s.stage = Stage::kDensity;
+  else if (stage == "compression") s.stage = Stage::kCompression;
+  else if (stage == "shear") s.stage = Stage::kShear;
+  else root.fail("stage", "must be \"density\", \"compression\" or \"shear\", got \"" + stage + "\"");
+  s.title = root.string("title", "");
+  root.string("provenance", "");
+
+  // --- the DEM model --------------------------------------------------------------
+  const Node model = root.child("model");
+  s.model_config = resolve(path, model.string("config", "", true));
+  if (!fs::exists(s.model_config)) model.fail("config", "the model config " + s.model_config + " does not exist");
+  s.model_set = model.strings("set");
+  const std::string packing = model.string("packing", "per_run");
+  if (packing != "per_run" && packing != "shared") model.fail("packing", "must be \"per_run\" or \"shared\"");
+  s.shared_packing = packing == "shared";
+  if (s.shared_packing && s.stage == Stage::kDensity)
+    model.fail("packing", "the density stage measures the settled packing: every run must settle (\"per_run\")");
+  model.reject_unknown();
+  const Scenario scenario = s.stage == Stage::kShear ? Scenario::kShear : Scenario::kOedometer;
+  try {
+    s.base = load_run_config(scenario, s.model_config, s.model_set);
+  } catch (const ConfigError& e) {
+    throw ConfigError(path, "model", std::string("the model config does not load: ") + e.what());
+  }
+
+  // --- parameters and design ---------------------------------------------------------
+  Problem& p = s.problem;
+  const toml::node* params = root.get("parameters");
+  const toml::array* pa = params ? params->as_array() : nullptr;
+  if (!pa || pa->empty()) root.fail("parameters", "missing: give one [[parameters]] table per calibrated parameter");
+  std::vector<std::vector<double>> columns;
+  for (std::size_t j = 0; j < pa->size(); ++j) {
+    const toml::table* t = (*pa)[j].as_table();
+    if (!t) root.fail("parameters", "must be an array of tables ([[parameters]])");
+    const Node n{path, t, "parameters[" + std::to_string(j) + "]", {}};
+    Parameter par;
+    par.key = n.string("key", "", true);
+    par.name = n.string("name", par.key);
+    par.unit = n.string("unit", "");
+    std::vector<double> d = n.numbers("design");
+    if (d.empty()) n.fail("design", "missing: the parameter's value at each design point");
+    par.lower = n.number("lower", *std::min_element(d.begin(), d.end()));
+    par.upper = n.number("upper", *std::max_element(d.begin(), d.end()));
+    if (!(par.upper > par.lower))
+      n.fail("design", "the design does not vary " + par.name + " (range [" + fmt(par.lower) + ", " + fmt(par.upper) +
+                           "]): a surface cannot be fitted");
+    for (double v : d)
+      if (v < par.lower || v > par.upper) n.fail("design", "design value " + fmt(v) + " is outside [lower, upper]");
+    // The parameter must be a number the model config accepts.
+    try {
+      load_run_config(scenario, s.model_config, [&] {
+        auto o = s.model_set;
+        o.push_back(par.key + "=" + fmt(d[0]));
+        return o;
+      }());
+    } catch (const ConfigError& e) {
+      n.fail("key", std::string("the model does not accept this parameter: ") + e.what());
+    }
+    if (!columns.empty() && d.size() != columns[0].size())
+      n.fail("design", "has " + std::to_string(d.size()) + " values, parameters[0].design has " +
+                           std::to_string(columns[0].size()) + ": every parameter needs one value per design point");
+    columns.push_back(d);
+    p.parameters.push_back(par);
+    n.reject_unknown();
+  }
+  const std::size_t np = p.parameters.size();
+  for (std::size_t k = 0; k < columns[0].size(); ++k) {
+    Eigen::VectorXd x(np);
+    for (std::size_t j = 0; j < np; ++j) x[j] = columns[j][k];
+    p.design.push_back(x);
+  }
+  if (p.design.size() < np + 1)
+    root.fail("parameters", "too few design points for the surrogate: " + std::to_string(p.design.size()) +
+                                " given, a plane in " + std::to_string(np) + " parameter(s) needs at least " +
+                                std::to_string(np + 1) + " (the paper used 7 for compression, 5 for shear)");
+
+  // --- surrogate and sequential settings -------------------------------------------
+  const Node fit = root.child("fit");
+  try {
+    p.surface = surface_kind_from_string(fit.string("surface", "auto"));
+  } catch (const std::invalid_argument& e) {
+    fit.fail("surface", e.what());
+  }
+  fit.reject_unknown();
+  const Node seq = root.child("sequential");
+  p.max_runs = static_cast<int>(seq.number("max_runs", 12.0));
+  if (p.max_runs < static_cast<int>(np) + 2)
+    seq.fail("max_runs", "must allow the " + std::to_string(np + 1) + " start points and one refinement run (>= " +
+                             std::to_string(np + 2) + ")");
+  if (const toml::node* st = seq.get("start")) {
+    const toml::array* a = st->as_array();
+    if (!a) seq.fail("start", "must be an array of points, e.g. [[400e3, 0.3], [450e3, 0.3], [400e3, 0.4]]");
+    for (const auto& row : *a) {
+      const toml::array* r = row.as_array();
+      if (!r || r->size() != np) seq.fail("start", "every point needs " + std::to_string(np) + " values");
+      Eigen::VectorXd x(np);
+      for (std::size_t j = 0; j < np; ++j) {
+        auto v = (*r)[j].value<double>();
+        if (!v) seq.fail("start", "points must be numbers");
+        x[j] = *v;
+      }
+      p.sequential_start.push_back(x);
+    }
+    if (p.sequential_start.size() < np + 1)
+      seq.fail("start", "needs at least " + std::to_string(np + 1) + " points to determine a plane");
+  }
+  seq.reject_unknown();
+
+  // --- measured data -> targets ------------------------------------------------------
+  const Node m = root.child("measured");
+  if (!m.table) root.fail("measured", "missing: the [measured] table names the measured data and their uncertainties");
+  if (s.stage == Stage::kDensity) {
+    p.targets.push_back({"bulk_density", "kg/m^3", m.positive("bulk_density"), m.positive("bulk_density_uncertainty")});
+  } else if (s.stage == Stage::kCompression) {
+    const double u1 = m.positive("c1_uncertainty"), u2 = m.positive("c2_uncertainty");
+    if (m.has("curve")) {
+      if (m.has("c1") || m.has("c2")) m.fail("curve", "give either the curve or c1 and c2, not both");
+      s.measured_file = resolve(path, m.string("curve", ""));
+      if (!fs::exists(s.measured_file)) m.fail("curve", "the measured curve " + s.measured_file + " does not exist");
+      const std::string dcol = m.string("displacement_column", "displacement");
+      const std::string fcol = m.string("force_column", "force");
+      const auto cols = read_csv_columns(s.measured_file, {dcol, fcol}, path, "measured.curve");
+      const double fmin = s.base.oedometer.fit_force_min, fmax = s.base.oedometer.fit_force_max;
+      const double peak = cols[1].empty() ? 0.0 : *std::max_element(cols[1].begin(), cols[1].end());
+      if (peak < fmax)
+        m.fail("curve", s.measured_file + ": the curve never reaches its fit range: its largest force is " + fmt(peak) +
+                            " N, the fit runs to oedometer.fit_force_max = " + fmt(fmax) +
+                            " N; lower it in [model] set (e.g. \"oedometer.fit_force_max=" + fmt(0.95 * peak) +
+                            "\") or supply the whole curve");
+      const CompressionFit cf = fit_compression_curve(cols[0], cols[1], fmin, fmax);
+      if (!cf.valid || cf.fit.points < 10)
+        m.fail("curve", s.measured_file + ": too few points between " + fmt(fmin) + " and " + fmt(fmax) +
+                            " N to fit F = c0 + c1 s + c2 s^2 (need >= 10)");
+      p.targets.push_back({"c1", "N/m", cf.fit.coefficients[1], u1});
+      p.targets.push_back({"c2", "N/m^2", cf.fit.coefficients[2], u2});
+      s.measured_c0 = cf.fit.coefficients[0];
+      s.measured_fit_r2 = cf.fit.r2;
+      if (cf.fit.r2 < 0.95)
+        s.warnings.push_back("the measured curve is poorly described by a quadratic (R^2 = " + fmt(cf.fit.r2) +
+                             " < 0.95, the paper's simulated curves reach > 0.95): check the curve's units and range");
+    } else {
+      p.targets.push_back({"c1", "N/m", m.number("c1"), u1});
+      p.targets.push_back({"c2", "N/m^2", m.number("c2"), u2});
+    }
+  } else {
+    const double uc = m.positive("cohesion_uncertainty"), ut = m.positive("tan_phi_uncertainty");
+    s.measured_file = resolve(path, m.string("results", "", true));
+    if (!fs::exists(s.measured_file)) m.fail("results", "the measured shear results " + s.measured_file + " do not exist");
+    const auto cols = read_csv_columns(s.measured_file, {"normal_stress", "shear_strength"}, path, "measured.results");
+    std::set<double> distinct(cols[0].begin(), cols[0].end());
+    if (distinct.size() < 2)
+      m.fail("results", s.measured_file + ": needs shear strengths at two or more distinct normal stresses for "
+                                          "the Mohr-Coulomb line, got " + std::to_string(distinct.size()));
+    for (std::size_t k = 0; k < cols[0].size(); ++k) {
+      if (!(cols[0][k] > 0.0) || !(cols[1][k] > 0.0))
+        m.fail("results", s.measured_file + ": normal stress and shear strength must be > 0 (Pa)");
+      s.measured_points.push_back({cols[0][k], cols[1][k]});
+    }
+    const MohrCoulombFit mc = fit_mohr_coulomb(cols[0], cols[1]);
+    s.measured_fit_r2 = mc.r2;
+    p.targets.push_back({"cohesion", "Pa", mc.cohesion, uc});
+    p.targets.push_back({"tan_phi", "-", mc.slope, ut});
+    s.loads = m.numbers("loads");
+    if (s.loads.empty()) s.loads = {*distinct.begin(), *distinct.rbegin()};  // the paper: lowest and highest
+    if (std::set<double>(s.loads.begin(), s.loads.end()).size() < 2)
+      m.fail("loads", "needs two or more distinct normal stresses (Pa)");
+    for (double l : s.loads)
+      if (!(l > 0.0)) m.fail("loads", "normal stresses must be > 0 (Pa)");
+    if (mc.cohesion < 0.0)
+      s.warnings.push_back("the measured line has a negative cohesion (" + fmt(mc.cohesion) + " Pa): check the data");
+  }
+  m.reject_unknown();
+  root.reject_unknown();
+  return s;
+}
+
+}  // namespace colza::calibration

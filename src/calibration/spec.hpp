@@ -1,0 +1,42 @@
+// The calibration spec (a TOML file, see data/calibration/*.toml): which stage, the DEM
+// configuration the runs start from, the parameters and their design, the measured data
+// (files in plain formats) and the targets' uncertainties. Every problem is reported as a
+// ConfigError naming the file, the key and the reason (CLI exit code 2).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "calibration/calibrate.hpp"
+#include "config/run_config.hpp"
+
+namespace colza::calibration {
+
+enum class Stage { kDensity, kCompression, kShear };
+const char* to_string(Stage s);
+
+struct Spec {
+  std::string file;                 // the spec's path
+  Stage stage = Stage::kDensity;
+  std::string title;
+  std::string model_config;         // DEM config path (resolved against the spec's folder)
+  std::vector<std::string> model_set;  // overrides applied to every run ("key=value")
+  bool shared_packing = false;      // density/compression: settle once at the design centre, load every run from it
+  RunConfig base;                   // the model config as read (overrides applied), for validation and fit ranges
+  Problem problem;                  // parameters, targets, design, sequential settings
+  std::vector<double> loads;        // shear: normal stresses of each design run's series (Pa)
+  // What the targets were derived from, for the report.
+  std::string measured_file;
+  std::vector<std::pair<double, double>> measured_points;  // shear: (sigma, tau); compression: empty
+  double measured_fit_r2 = 0.0;     // compression: R^2 of the measured curve's quadratic; shear: of the line
+  double measured_c0 = 0.0;         // compression: c0 of the measured curve (N), not a target
+  std::vector<std::string> warnings;
+};
+
+// Reads and checks everything (files exist, curves reach their range, enough design points).
+Spec read_spec(const std::string& path);
+
+// Reads a CSV with a header line; returns the named columns. Throws ConfigError(file_for_errors, key, ...).
+std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const std::vector<std::string>& columns,
+                                                  const std::string& spec_file, const std::string& key);
+
+}  // namespace colza::calibration

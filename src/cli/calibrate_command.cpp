@@ -1,0 +1,135 @@
+#include "cli/calibrate_command.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "calibration/calibrate.hpp"
+#include "calibration/dem_model.hpp"
+#include "calibration/report.hpp"
+#include "calibration/spec.hpp"
+#include "config/config_error.hpp"
+#include "io/output_dir.hpp"
+#include "io/summary.hpp"
+
+namespace colza {
+
+namespace fs = std::filesystem;
+using namespace colza::calibration;
+
+namespace {
+
+// Spec key a calibration error is about.
+std::string spec_key(const Spec& spec, const std::string& key) {
+  for (const auto& t : spec.problem.targets)
+    if (t.name == key) {
+      if (spec.stage == Stage::kDensity) return "measured.bulk_density";
+      if (spec.stage == Stage::kCompression) return spec.measured_file.empty() ? "measured." + key : "measured.curve";
+      return "measured.results";
+    }
+  if (key == "design") return "parameters[].design";
+  return key;
+}
+
+}  // namespace
+
+int calibrate_command(const CalibrateOptions& opt) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Spec spec;
+  try {
+    if (opt.spec_path.empty()) throw ConfigError("--spec", "", "a calibration spec is required");
+    spec = read_spec(opt.spec_path);
+    if (opt.stage != to_string(spec.stage))
+      throw ConfigError(opt.spec_path, "stage", "the spec is for stage \"" + std::string(to_string(spec.stage)) +
+                                                    "\", the command asked for \"" + opt.stage + "\"");
+    validate_problem(spec.problem, opt.mode == "sequential");
+    check_output_dir(opt.out_dir, opt.force);
+  } catch (const ConfigError& e) {
+    std::fprintf(stderr, "colza: error: %s\n", e.what());
+    return 2;
+  } catch (const CalibrationError& e) {
+    std::fprintf(stderr, "colza: error: %s: key '%s': %s\n", opt.spec_path.c_str(), spec_key(spec, e.key()).c_str(), e.what());
+    return 2;
+  }
+  for (const auto& w : spec.warnings) std::fprintf(stderr, "colza: warning: %s\n", w.c_str());
+
+  const bool verbose = !opt.quiet;
+  if (verbose) {
+    std::printf("calibrate %s (%s mode): %zu parameter(s), targets:", to_string(spec.stage), opt.mode.c_str(),
+                spec.problem.parameters.size());
+    for (const auto& t : spec.problem.targets) std::printf(" %s = %.6g +/- %.3g %s;", t.name.c_str(), t.value, t.uncertainty, t.unit.c_str());
+    std::printf(" %d job(s)\n", opt.jobs);
+    std::fflush(stdout);
+  }
+  const fs::path out(opt.out_dir);
+  fs::create_directories(out);
+  DemModel dem(spec, out / "runs", verbose);
+  const ForwardModel model = [&dem](const Eigen::VectorXd& x) { return dem(x); };
+  LoopOptions loop;
+  loop.jobs = opt.jobs;
+  CalibrationResult result;
+  try {
+    result = opt.mode == "sequential" ? calibrate_sequential(spec.problem, model, loop)
+                                      : calibrate_paper(spec.problem, model, loop);
+  } catch (const ConfigError& e) {
+    std::fprintf(stderr, "colza: error: %s\n", e.what());
+    return 2;
+  } catch (const CalibrationError& e) {
+    std::fprintf(stderr, "colza: error: %s: key '%s': %s\n", opt.spec_path.c_str(), spec_key(spec, e.key()).c_str(), e.what());
+    return 2;
+  }
+
+  ReportContext ctx;
+  ctx.stage = to_string(spec.stage);
+  ctx.spec_file = opt.spec_path;
+  ctx.title = spec.title;
+  ctx.measured_file = spec.measured_file;
+  ctx.paper_design_runs = spec.problem.design.size() + 1;
+  ctx.extra_warnings = spec.warnings;
+  if (spec.shared_packing) ctx.notes = "Packing: " + dem.shared_packing_note() + ".";
+  if (spec.stage == Stage::kShear) {
+    ctx.notes = "Each design run is a shear series at the loads";
+    for (double l : spec.loads) ctx.notes += " " + std::to_string(l) + " Pa";
+    ctx.notes += " from one settled sample (bond strengths do not act before loading); C and tan(Phi) from the "
+                 "Mohr-Coulomb line through the shear strengths.";
+    if (!spec.measured_points.empty()) {
+      ctx.notes += " Measured (normal stress, shear strength) in Pa:";
+      for (const auto& [s, t] : spec.measured_points) ctx.notes += " (" + std::to_string(s) + ", " + std::to_string(t) + ")";
+      ctx.notes += ".";
+    }
+  }
+  if (spec.stage == Stage::kCompression && !spec.measured_file.empty())
+    ctx.notes += " Measured curve fitted over " + std::to_string(spec.base.oedometer.fit_force_min) + " .. " +
+                 std::to_string(spec.base.oedometer.fit_force_max) + " N: c0 = " + std::to_string(spec.measured_c0) +
+                 " N, R^2 = " + std::to_string(spec.measured_fit_r2) + ".";
+  for (const auto& run : result.runs) {
+    const DemRunRecord* rec = dem.find(run.x);
+    ctx.run_ids.push_back(rec ? rec->id : "");
+    ctx.run_reused.push_back(rec ? rec->reused : false);
+    ctx.run_wall_seconds.push_back(rec ? rec->wall_seconds : 0.0);
+  }
+  ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  OutputStaging staging(out, /*overwrite=*/true);  // an earlier summary was refused above unless --force
+  write_json(staging.path("summary.json"), calibration_summary(spec.problem, result, ctx));
+  {
+    std::ofstream md(staging.path("report.md"));
+    md << calibration_report(spec.problem, result, ctx);
+  }
+  staging.commit();
+
+  std::printf("calibrated %s (%s): %zu forward runs (paper design: %zu)\n", to_string(spec.stage), result.mode.c_str(),
+              result.runs.size(), ctx.paper_design_runs);
+  for (std::size_t j = 0; j < spec.problem.parameters.size(); ++j)
+    std::printf("  %s = %.6g +/- %.3g %s\n", spec.problem.parameters[j].name.c_str(), result.solution[j], result.sigma[j],
+                spec.problem.parameters[j].unit.c_str());
+  for (std::size_t i = 0; i < spec.problem.targets.size(); ++i)
+    std::printf("  %s: measured %.6g +/- %.3g, validation %.6g (error %+.3g, %.2f sigma)\n",
+                spec.problem.targets[i].name.c_str(), spec.problem.targets[i].value, spec.problem.targets[i].uncertainty,
+                result.achieved[i], result.error[i], result.error[i] / spec.problem.targets[i].uncertainty);
+  for (const auto& w : result.warnings) std::fprintf(stderr, "colza: warning: %s\n", w.c_str());
+  return 0;
+}
+
+}  // namespace colza

@@ -1,0 +1,23 @@
+// `colza calibrate density|compression|shear --spec FILE --out DIR [--mode paper|sequential]
+//  [--jobs N] [--force] [--quiet]`: the paper's staged calibration (sections 2.2, 3.2, 3.3)
+// or a sequential trust-region refinement, written to DIR/summary.json and DIR/report.md;
+// design runs are kept in DIR/runs/<fingerprint>/ and reused when the command runs again.
+#pragma once
+#include <string>
+
+namespace colza {
+
+struct CalibrateOptions {
+  std::string stage;           // density | compression | shear
+  std::string spec_path;
+  std::string out_dir;
+  std::string mode = "paper";  // paper | sequential
+  int jobs = 1;
+  bool force = false;
+  bool quiet = false;
+};
+
+// Returns the exit code: 0 success, 2 bad input (message printed).
+int calibrate_command(const CalibrateOptions& options);
+
+}  // namespace colza
