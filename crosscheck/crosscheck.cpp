@@ -11,8 +11,12 @@
 //              208-sphere packing; --size full: the paper's packing, generated first by
 //              `colza run oedometer` with data/oedometer.toml); compares the force-displacement
 //              curves;
-//   shear      hook for the shear-box comparison (not available yet);
-//   all        micro, the small oedometer (and the full one with --size full), shear.
+//   shear      both codes run the direct shear box from the same packing (made once by
+//              `colza run shear`; --size small: crosscheck/scenes/shear_small.toml, --size
+//              full: scenes/shear_full.toml, data/shear.toml's geometry); a short
+//              deterministic start must coincide, then per load the shear strength, mean
+//              normal stress and shear-stress curve, and C and Phi of the loads, are compared;
+//   all        micro, the small oedometer and shear (and the full ones with --size full).
 //
 // Prints a table (metric, colza, YADE, difference, tolerance, PASS/FAIL) and both codes'
 // speed. Exit code: 0 all passed, 1 something failed, 2 bad usage or a run failed to
@@ -26,11 +30,13 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <sys/wait.h>
 #include <toml++/toml.h>
 #include <vector>
@@ -212,10 +218,11 @@ class Runner {
   Runner(Options opt, toml::table tol) : opt_(std::move(opt)), tol_(std::move(tol)) {}
 
   bool run_colza(const std::string& scenario, const fs::path& config, const fs::path& out,
-                 const std::vector<std::string>& sets = {}) {
+                 const std::vector<std::string>& sets = {}, const std::vector<std::string>& extra = {}) {
     std::string cmd = quote(opt_.colza.string()) + " run " + scenario + " --config " + quote(config.string()) +
                       " --out " + quote(out.string()) + " --force --quiet";
     for (const auto& s : sets) cmd += " --set " + quote(s);
+    for (const auto& e : extra) cmd += " " + quote(e);
     fs::create_directories(out.parent_path());
     const fs::path log = out.string() + ".log";
     const RunResult r = run_logged(cmd, log);
@@ -226,10 +233,12 @@ class Runner {
     return true;
   }
 
-  bool run_yade(const std::string& script, const fs::path& config, const fs::path& out) {
+  bool run_yade(const std::string& script, const fs::path& config, const fs::path& out,
+                const std::vector<std::string>& extra = {}) {
     const fs::path py = opt_.source / "yade-scripts" / script;
-    const std::string cmd = quote(opt_.yade) + " -n -j 1 -x " + quote(py.string()) + " " + quote(config.string()) + " " +
-                            quote(out.string());
+    std::string cmd = quote(opt_.yade) + " -n -j 1 -x " + quote(py.string()) + " " + quote(config.string()) + " " +
+                      quote(out.string());
+    for (const auto& e : extra) cmd += " " + quote(e);
     fs::create_directories(out.parent_path());
     const fs::path log = out.string() + ".log";
     const RunResult r = run_logged(cmd, log);
@@ -240,17 +249,23 @@ class Runner {
     return true;
   }
 
-  void add_speed(const fs::path& colza_out, const fs::path& yade_out) {
+  // Accumulates each code's particle-steps and time on a loading both ran. The oedometer's
+  // step counts are equal; a shear load's differ a little (consolidation ends when the
+  // stress holds, a chaotic moment), so each rate is its own particle-steps / seconds.
+  void add_speed(const fs::path& colza_out, const fs::path& yade_out, const std::string& what) {
     const auto c = read_json(colza_out / "summary.json");
     const auto y = read_json(yade_out / "summary.json");
     if (!c.contains("particle_steps_per_second") || !y.contains("particle_steps_per_second")) return;
-    const double ps = y.value("particles", 0.0) * y.value("steps", 0.0);
+    const double ps_y = y.value("particles", 0.0) * y.value("steps", 0.0);
+    const double ps_c = c.value("particles", 0.0) * c.value("steps", 0.0);
     const double c_rate = c["particle_steps_per_second"].get<double>();
-    if (ps <= 0.0 || c_rate <= 0.0) return;
-    speed_.particle_steps += ps;
-    colza_seconds_ += ps / c_rate;
+    if (ps_y <= 0.0 || ps_c <= 0.0 || c_rate <= 0.0) return;
+    speed_.particle_steps += ps_y;
+    colza_particle_steps_ += ps_c;
+    colza_seconds_ += ps_c / c_rate;
     yade_seconds_ += y.value("wall_seconds", 0.0);
     yade_engine_seconds_ += y.value("wall_seconds", 0.0) - y.value("python_engine_seconds", 0.0);
+    if (speed_what_.find(what) == std::string::npos) speed_what_ += (speed_what_.empty() ? "" : ", ") + what;
   }
 
   void micro(Report& report) {
@@ -331,7 +346,7 @@ class Runner {
       report.fail("oedometer " + size, "run failed");
       return;
     }
-    add_speed(c_out, y_out);
+    add_speed(c_out, y_out, "oedometer " + size);
     try {
       compare_curves(report, "oed " + size, read_csv(c_out / "curve.csv"), read_csv(y_out / "curve.csv"), *t,
                      read_json(c_out / "summary.json"), read_json(y_out / "summary.json"), config);
@@ -340,23 +355,193 @@ class Runner {
     }
   }
 
-  void shear(Report& report) {
-    // Hook: once the shear-box scenario exists, run it here in both codes (a YADE script
-    // yade-scripts/run_shear_box.py) and compare shear force vs displacement and the
-    // plate's dilatancy like the oedometer curves. Until then nothing is claimed.
-    report.note("shear: not yet available (no YADE shear-box script yet; see Runner::shear)");
+  // Shear box: colza makes the sample once (generation + settling + cut, its packing.txt);
+  // then, from that packing, (1) a short deterministic run (the stress is not consolidated,
+  // shearing starts at once) must coincide in both codes like the micro scenes, and (2)
+  // every load of [shear.<size>] runs the full protocol in both codes (servo consolidation,
+  // bonds, shearing); the shear strength, the mean normal stress, the shear-stress curve over
+  // the strength window and the Mohr-Coulomb C and Phi of the loads are compared.
+  void shear(Report& report, const std::string& size) {
+    const std::string base = "shear." + size;
+    const toml::table* t = tol_.at_path(base).as_table();
+    if (!t) {
+      report.fail("shear " + size, "no [" + base + "] in the tolerances file");
+      return;
+    }
+    const std::string label = "shear " + size;
+    const fs::path scene = opt_.source / t->at_path("config").value_or(std::string());
+    const fs::path work = opt_.workdir / ("shear_" + size);
+    fs::create_directories(work);
+    toml::table doc;
+    try {
+      doc = toml::parse_file(scene.string());
+    } catch (const std::exception& e) {
+      report.fail(label, "cannot read " + scene.string() + ": " + e.what());
+      return;
+    }
+    toml::table* box = doc["shear_box"].as_table();
+    if (!box) {
+      report.fail(label, scene.string() + " has no [shear_box]");
+      return;
+    }
+    std::vector<double> loads;
+    if (const auto* a = t->at_path("loads").as_array())
+      for (const auto& n : *a) loads.push_back(n.value<double>().value_or(0.0));
+    if (loads.empty()) {
+      report.fail(label, "no loads in [" + base + "]");
+      return;
+    }
+    // 1. The sample, made once by colza (the load of this run is cut short: it only makes
+    // packing.txt).
+    const fs::path prep = work / "sample";
+    if (!fs::exists(prep / "packing.txt")) {
+      std::printf("crosscheck: %s: colza makes the sample (generation, settling, cut)...\n", label.c_str());
+      std::fflush(stdout);
+      if (!run_colza("shear", scene, prep,
+                     {"shear_box.consolidation_max_time=1e-9", "shear_box.strength_window_start=0",
+                      "shear_box.strength_window_end=1e-9", "shear_box.shear_displacement=1e-9"},
+                     {"--normal-stress", fmt(loads[0], "%.17g")})) {
+        report.fail(label, "colza could not make the sample");
+        return;
+      }
+    }
+    box->insert_or_assign("packing_file", fs::absolute(prep / "packing.txt").string());
+    auto write_config = [&](const toml::table& d, const std::string& name) {
+      const fs::path f = work / name;
+      std::ofstream o(f);
+      o << "# written by crosscheck from " << scene.string() << "\n" << d << "\n";
+      return f;
+    };
+    const fs::path config = write_config(doc, "shear_" + size + ".toml");
+    const double dt = doc.at_path("integration.time_step").value_or(0.0);
+    const double ws = box->at_path("strength_window_start").value_or(0.020);
+    const double we = box->at_path("strength_window_end").value_or(0.030);
+
+    // 2. Deterministic start: no consolidation (the servo runs 4 steps), shearing at once
+    // for early_steps; before chaos sets in the two codes must coincide.
+    {
+      const double speed = box->at_path("shear_speed").value_or(0.005);
+      const double early_steps = tol_number(*t, "early_steps", 400);
+      const double disp = early_steps * dt * speed;
+      toml::table e = doc;
+      toml::table& eb = *e["shear_box"].as_table();
+      eb.insert_or_assign("consolidation_max_time", 4 * dt);
+      eb.insert_or_assign("shear_displacement", disp);
+      eb.insert_or_assign("strength_window_start", 0.0);
+      eb.insert_or_assign("strength_window_end", disp);
+      eb.insert_or_assign("record_interval", 10);
+      const fs::path econfig = write_config(e, "shear_" + size + "_early.toml");
+      const fs::path c_out = work / "colza_early", y_out = work / "yade_early";
+      const std::vector<std::string> sigma = {"--normal-stress", fmt(loads[0], "%.17g")};
+      std::printf("crosscheck: %s: deterministic start (%g steps)...\n", label.c_str(), early_steps);
+      std::fflush(stdout);
+      if (!run_colza("shear", econfig, c_out, {}, sigma) || !run_yade("run_shear.py", econfig, y_out, sigma)) {
+        report.fail(label + " deterministic start", "run failed");
+      } else {
+        try {
+          const Csv c = read_csv(c_out / "curve.csv"), y = read_csv(y_out / "curve.csv");
+          if (c.rows() != y.rows() || c.rows() == 0) throw std::runtime_error("different numbers of curve rows");
+          for (const char* q : {"shear_stress", "normal_stress"}) {
+            double num = 0.0, den = 0.0;
+            for (std::size_t r = 0; r < c.rows(); ++r) {
+              num = std::max(num, std::abs(c.at(q)[r] - y.at(q)[r]));
+              den = std::max(den, std::abs(c.at(q)[r]));
+            }
+            report.check(label + " start, " + q + " (" + std::to_string(c.rows()) + " rows, max |diff| / max)", den,
+                         den, den > 0 ? num / den : 0.0, tol_number(*t, "early_relative", 1e-6));
+          }
+          double dmax = 0.0;
+          for (std::size_t r = 0; r < c.rows(); ++r)
+            for (const char* q : {"contacts", "bonds"}) dmax = std::max(dmax, std::abs(c.at(q)[r] - y.at(q)[r]));
+          report.check(label + " start, contacts and bonds (max |diff|)", c.at("contacts").back(),
+                       y.at("contacts").back(), dmax, 0.0, "%.0f");
+        } catch (const std::exception& ex) {
+          report.fail(label + " deterministic start", ex.what());
+        }
+      }
+    }
+
+    // 3. The loads, full protocol.
+    std::vector<double> c_strength, y_strength;
+    for (double sigma : loads) {
+      const std::string name = "load-" + fmt(sigma, "%.0f") + "Pa";
+      const std::string l = label + " " + fmt(1e-3 * sigma, "%.2f") + " kPa";
+      const fs::path c_out = work / ("colza_" + name), y_out = work / ("yade_" + name);
+      const std::vector<std::string> arg = {"--normal-stress", fmt(sigma, "%.17g")};
+      std::printf("crosscheck: %s: running colza and YADE...\n", l.c_str());
+      std::fflush(stdout);
+      if (!run_colza("shear", config, c_out, {}, arg) || !run_yade("run_shear.py", config, y_out, arg)) {
+        report.fail(l, "run failed");
+        continue;
+      }
+      add_speed(c_out, y_out, label);
+      try {
+        const auto cs = read_json(c_out / "summary.json"), ys = read_json(y_out / "summary.json");
+        const Csv c = read_csv(c_out / "curve.csv"), y = read_csv(y_out / "curve.csv");
+        report.check(l + " particles", cs.value("particles", 0.0), ys.value("particles", 0.0),
+                     std::abs(cs.value("particles", 0.0) - ys.value("particles", 0.0)), 0.0, "%.0f");
+        const bool both = cs.value("consolidated", false) && ys.value("consolidated", false);
+        report.add(Row{l + " consolidated", cs.value("consolidated", false) ? "yes" : "no",
+                       ys.value("consolidated", false) ? "yes" : "no", "-", "both", both, false});
+        report.info(l + " consolidation time (s)", fmt(cs.value("consolidation_time", 0.0)),
+                    fmt(ys.value("consolidation_time", 0.0)), "chaotic, not compared");
+        const double c_tau = cs.value("shear_strength", 0.0), y_tau = ys.value("shear_strength", 0.0);
+        report.check(l + " shear strength (kPa)", 1e-3 * c_tau, 1e-3 * y_tau, std::abs(c_tau - y_tau) / std::abs(c_tau),
+                     tol_number(*t, "strength_relative", 0.1), "%.3f");
+        const double c_sig = cs.value("mean_normal_stress", 0.0), y_sig = ys.value("mean_normal_stress", 0.0);
+        report.check(l + " mean normal stress (kPa)", 1e-3 * c_sig, 1e-3 * y_sig, std::abs(c_sig - y_sig) / std::abs(c_sig),
+                     tol_number(*t, "normal_stress_relative", 0.01), "%.3f");
+        // shear stress over the strength window, YADE interpolated at colza's offsets
+        const auto& cx = c.at("shear_displacement");
+        const auto& ct = c.at("shear_stress");
+        double sq_diff = 0.0, sq = 0.0, sq_y = 0.0;
+        std::size_t n = 0;
+        for (std::size_t r = 0; r < c.rows(); ++r) {
+          if (cx[r] < ws || cx[r] > we) continue;
+          const double ty = interpolate(y.at("shear_displacement"), y.at("shear_stress"), cx[r]);
+          if (!std::isfinite(ty)) continue;
+          sq_diff += (ct[r] - ty) * (ct[r] - ty);
+          sq += ct[r] * ct[r];
+          sq_y += ty * ty;
+          ++n;
+        }
+        report.check(l + " shear stress rms difference / rms (" + std::to_string(n) + " rows, " + fmt(1e3 * ws, "%.2f") +
+                         "-" + fmt(1e3 * we, "%.2f") + " mm, kPa)",
+                     1e-3 * std::sqrt(sq / std::max<std::size_t>(n, 1)),
+                     1e-3 * std::sqrt(sq_y / std::max<std::size_t>(n, 1)),
+                     n > 0 && sq > 0 ? std::sqrt(sq_diff / sq) : std::numeric_limits<double>::quiet_NaN(),
+                     tol_number(*t, "curve_rms_relative", 0.2));
+        const double c_out_n = cs.value("particles_outside", 0.0), y_out_n = ys.value("particles_outside", 0.0);
+        report.add(Row{l + " particles outside the box", fmt(c_out_n, "%.0f"), fmt(y_out_n, "%.0f"), "-", "0",
+                       c_out_n == 0.0 && y_out_n == 0.0, false});
+        c_strength.push_back(c_tau);
+        y_strength.push_back(y_tau);
+      } catch (const std::exception& e) {
+        report.fail(l, e.what());
+      }
+    }
+    // 4. Mohr-Coulomb line through (nominal load, strength), as colza's shear-series.
+    if (c_strength.size() == loads.size() && loads.size() >= 2) {
+      const auto [cc, cphi] = mohr_coulomb(loads, c_strength);
+      const auto [yc, yphi] = mohr_coulomb(loads, y_strength);
+      report.check(label + " cohesion C (kPa)", 1e-3 * cc, 1e-3 * yc, 1e-3 * std::abs(cc - yc),
+                   tol_number(*t, "cohesion_absolute_kpa", 5.0), "%.3f");
+      report.check(label + " friction angle Phi (deg)", cphi, yphi, std::abs(cphi - yphi),
+                   tol_number(*t, "friction_angle_absolute_deg", 5.0), "%.2f");
+    }
   }
 
   void print_speed() const {
     if (speed_.particle_steps <= 0.0) {
-      std::printf("\nspeed: measured on the oedometer runs (the micro scenes are too small to time)\n");
+      std::printf("\nspeed: measured on the oedometer and shear runs (the micro scenes are too small to time)\n");
       return;
     }
-    const double c = speed_.particle_steps / colza_seconds_;
+    const double c = colza_particle_steps_ / colza_seconds_;
     const double y = speed_.particle_steps / yade_seconds_;
     const double ye = yade_engine_seconds_ > 0 ? speed_.particle_steps / yade_engine_seconds_ : 0.0;
-    std::printf("\nspeed on the same oedometer loading (%.3g particle-steps, single thread, from each run's wall time):\n",
-                speed_.particle_steps);
+    std::printf("\nspeed on the same loadings (%s; colza %.3g, YADE %.3g particle-steps; single thread, from each "
+                "run's wall time):\n",
+                speed_what_.c_str(), colza_particle_steps_, speed_.particle_steps);
     std::printf("  colza                                   %10.3g particle-steps/s\n", c);
     std::printf("  YADE (whole loop incl. Python runners)  %10.3g particle-steps/s   colza/YADE = %.1f\n", y, c / y);
     if (ye > 0)
@@ -496,6 +681,20 @@ class Runner {
       report.fail(label + " YADE cylinder patches", "a patch touched a sphere other than its own");
   }
 
+  // Least-squares line tau = C + sigma tan(Phi); returns (C in Pa, Phi in degrees).
+  static std::pair<double, double> mohr_coulomb(const std::vector<double>& sigma, const std::vector<double>& tau) {
+    const double n = static_cast<double>(sigma.size());
+    double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+    for (std::size_t k = 0; k < sigma.size(); ++k) {
+      sx += sigma[k];
+      sy += tau[k];
+      sxx += sigma[k] * sigma[k];
+      sxy += sigma[k] * tau[k];
+    }
+    const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    return {(sy - slope * sx) / n, std::atan(slope) * 180.0 / std::numbers::pi};
+  }
+
   static double fit_force_min(const fs::path& config) {
     try {
       const toml::table t = toml::parse_file(config.string());
@@ -508,7 +707,8 @@ class Runner {
   Options opt_;
   toml::table tol_;
   Speed speed_;
-  double colza_seconds_ = 0.0, yade_seconds_ = 0.0, yade_engine_seconds_ = 0.0;
+  double colza_seconds_ = 0.0, yade_seconds_ = 0.0, yade_engine_seconds_ = 0.0, colza_particle_steps_ = 0.0;
+  std::string speed_what_;
 };
 
 bool yade_available(const std::string& yade) {
@@ -592,7 +792,11 @@ int main(int argc, char** argv) {
     runner.oedometer(report, "small");
     if (opt.size == "full") runner.oedometer(report, "full");
   }
-  if (opt.what == "shear" || opt.what == "all") runner.shear(report);
+  if (opt.what == "shear") runner.shear(report, opt.size);
+  if (opt.what == "all") {
+    runner.shear(report, "small");
+    if (opt.size == "full") runner.shear(report, "full");
+  }
   std::printf("\n");
   report.print();
   runner.print_speed();
