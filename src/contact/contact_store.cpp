@@ -53,6 +53,7 @@ void ContactStore::adopt_particle_pairs(std::vector<Index> first, std::vector<In
   particle_pairs.first.swap(first);
   particle_pairs.second.swap(second);
   particle_pairs.history.swap(history);
+  ++revision_;
 }
 
 void ContactStore::adopt_wall_pairs(std::vector<Index> wall, std::vector<Index> particle) {
@@ -61,9 +62,11 @@ void ContactStore::adopt_wall_pairs(std::vector<Index> wall, std::vector<Index> 
   wall_pairs.wall.swap(wall);
   wall_pairs.particle.swap(particle);
   wall_pairs.history.swap(history);
+  ++revision_;
 }
 
 void ContactStore::renumber_particles(const std::vector<Index>& old_to_new) {
+  ++revision_;
   const Index removed = ParticleArrays::kRemoved;
   {  // particle pairs: keep (min, max) order and re-sort (a permutation may reorder pairs)
     auto& L = particle_pairs;

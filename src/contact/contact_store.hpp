@@ -34,9 +34,16 @@ class ContactStore {
   // Rename particles after removal/reordering (old_to_new[i] == kRemoved drops the pair).
   void renumber_particles(const std::vector<Index>& old_to_new);
 
+  // Bumped whenever adopt_* or renumber_particles replaces the lists, so that derived
+  // index structures (the stepper's per-particle gather lists) know when to rebuild.
+  std::uint64_t revision() const { return revision_; }
+
   std::size_t touching_particle_contacts() const;
   std::size_t touching_wall_contacts() const;
   std::size_t bonded_contacts() const;
+
+ private:
+  std::uint64_t revision_ = 0;
 };
 
 }  // namespace colza

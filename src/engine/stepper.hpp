@@ -2,6 +2,7 @@
 //   neighbour lists (if stale) -> contact geometry -> contact law -> forces on bodies
 //   -> leapfrog integration with local damping -> walls move -> clock advances.
 #pragma once
+#include <vector>
 #include "engine/energy.hpp"
 #include "engine/world.hpp"
 #include "neighbour/neighbour_search.hpp"
@@ -55,12 +56,30 @@ class Stepper {
 
  private:
   void compute_forces(World& world);
+  // Per-particle gather lists of the particle pairs (threaded force path, see stepper.cpp).
+  void update_gather_lists(const World& world);
   PhysicsSettings physics_;
   PairTable pairs_;
   NeighbourSearch neighbours_;
   IntegrationReport last_integration_;
   EnergyLedger ledger_;
   ContactEvents events_;
+
+ public:
+  // Scratch of the threaded force path (kept to avoid reallocation). For particle p,
+  // gather_entries_[gather_start_[p] .. gather_start_[p + 1]) lists its pairs in pair
+  // order as 2 c + role (role 0: p is body 2, role 1: p is body 1).
+  struct GatherScratch {
+    std::uint64_t revision = ~std::uint64_t{0};
+    const Index* first_data = nullptr;
+    std::size_t n_pairs = 0, n_particles = 0;
+    std::vector<Index> start, entries;
+    std::vector<Vec3> pair_force, torque_1, torque_2;  // per pair: F on 2, torque on 1, torque on 2
+    std::vector<double> unbalanced;                   // per particle (integrator)
+  };
+
+ private:
+  GatherScratch gather_;
 };
 
 }  // namespace colza

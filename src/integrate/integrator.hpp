@@ -2,6 +2,7 @@
 //   v(t + dt/2) = v(t - dt/2) + dt a(t),   x(t + dt) = x(t) + dt v(t + dt/2)
 // and the same for rotation with the scalar inertia of a sphere.
 #pragma once
+#include <vector>
 #include "core/particles.hpp"
 
 namespace colza {
@@ -27,5 +28,14 @@ struct IntegrationReport {
 // Advances all free particles by one step using the forces and torques in `particles`.
 // Fixed particles move with their prescribed velocity. Gravity is added here.
 IntegrationReport integrate_step(ParticleArrays& particles, const IntegratorSettings& settings, double dt);
+
+// Same with `threads` OpenMP threads over fixed contiguous particle ranges. Particle states
+// and the mean/max unbalanced force are bit-for-bit those of the serial call; the damping
+// work is summed per range and then in range order, so it is deterministic at a given
+// thread count but may differ in the last bits from the serial sum. Small systems (fewer
+// than 2 kMinParticlesPerThread particles) take the serial path.
+inline constexpr std::size_t kMinParticlesPerThread = 512;
+IntegrationReport integrate_step(ParticleArrays& particles, const IntegratorSettings& settings, double dt,
+                                 int threads, std::vector<double>& unbalanced_scratch);
 
 }  // namespace colza

@@ -1,0 +1,248 @@
+#!/usr/bin/env python3
+"""colza vs YADE vs LAMMPS on the paper's oedometer packing (issue 5 benchmark).
+
+Prepares the settled oedometer packing once with colza (or takes --packing), then runs the
+loading stage of the same packing in every code with the same fixed dt and the same number
+of steps while the piston compresses at 500 mm/min, one thread each, and prints
+
+    code, particles, steps, wall seconds, particle-steps/s, ratio to colza, peak memory.
+
+Wall seconds are the time of the stepping loop only (colza: the loading stage clock in
+summary.json; LAMMPS: "Loop time"; YADE: O.run(N, True) timed inside the script); peak
+memory is the whole process (/usr/bin/time -v, maximum resident set size).
+
+Physics is matched as closely as the codes allow (it is a speed benchmark, not a
+cross-check): linear springs with tangential history and Coulomb friction, contact
+stiffnesses Kn = kn/2 (colza's series rule for one material), walls with the series rule of
+particle and wall stiffness; colza and YADE use local damping 0.7, LAMMPS has no local
+damping (pair gran/hooke/history with zero viscous damping). YADE's cylinder is a facet
+cylinder (YADE has no analytic cylinder wall for spheres); LAMMPS uses fix wall/gran
+zcylinder and a moving fix wall/gran/region plane for the piston.
+
+Neither YADE nor LAMMPS is needed by the build or the tests: this script is run by hand,
+e.g.  python3 tests/bench/compare_codes.py --colza build/src/colza --steps 20000
+"""
+import argparse
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+# Defaults of the oedometer scenario (src/config/run_config.hpp).
+DENSITY = 1250.0
+KN, KS, MU = 437e3, 100e3, 0.20
+KN_W, KS_W, MU_W = 4000e3, 1000e3, 0.23
+CYL_R = 0.050
+PISTON_SPEED = 0.5 / 60.0
+SKIN = 0.5e-3
+DAMPING = 0.7
+
+
+def series(a, b):
+    return a * b / (a + b)
+
+
+def read_packing(path):
+    spheres = []
+    with open(path) as f:
+        for line in f:
+            line = line.strip()
+            if not line or line.startswith("#"):
+                continue
+            x, y, z, r = map(float, line.split()[:4])
+            spheres.append((x, y, z, r))
+    return spheres
+
+
+def peak_rss_kb(stderr_text):
+    m = re.search(r"Maximum resident set size \(kbytes\): (\d+)", stderr_text)
+    return int(m.group(1)) if m else None
+
+
+def run_timed(cmd, cwd, log_path):
+    """Runs cmd under /usr/bin/time -v; returns (stdout, stderr, peak RSS kB, wall s)."""
+    t0 = time.perf_counter()
+    p = subprocess.run(["/usr/bin/time", "-v"] + cmd, cwd=cwd, capture_output=True, text=True)
+    wall = time.perf_counter() - t0
+    with open(log_path, "w") as f:
+        f.write(" ".join(cmd) + "\n--- stdout\n" + p.stdout + "\n--- stderr\n" + p.stderr)
+    if p.returncode != 0:
+        sys.exit(f"command failed ({p.returncode}), see {log_path}: {' '.join(cmd)}")
+    return p.stdout, p.stderr, peak_rss_kb(p.stderr), wall
+
+
+def prepare_packing(colza, work):
+    packing = os.path.join(work, "prep", "packing.txt")
+    if os.path.exists(packing):
+        return packing
+    print("preparing the settled oedometer packing with colza (once; several minutes) ...", flush=True)
+    subprocess.run([colza, "run", "oedometer", "--out", os.path.join(work, "prep"), "--force"], check=True,
+                   stdout=subprocess.DEVNULL)
+    return packing
+
+
+def run_colza(colza, packing, dt, steps, work, threads):
+    out = os.path.join(work, "colza")
+    # Loading stops at the first step whose piston travel reaches max_piston_travel: with
+    # travel(k) = v k dt that is step k = steps - 1 (counted from 0), i.e. `steps` steps.
+    travel = PISTON_SPEED * dt * (steps - 1.5)
+    cmd = [colza, "run", "oedometer", "--threads", str(threads), "--set", f"oedometer.packing_file={packing}",
+           "--set", f"integration.time_step={dt!r}", "--set", "oedometer.stop_force=1e12",
+           "--set", f"oedometer.max_piston_travel={travel!r}", "--out", out, "--force"]
+    _, err, rss, _ = run_timed(cmd, work, os.path.join(work, "colza.log"))
+    s = json.load(open(os.path.join(out, "summary.json")))
+    stage = next(st for st in s["stages"] if st["name"] == "loading")
+    return dict(code="colza", particles=s["particles"], steps=stage["steps"], seconds=stage["wall_seconds"], rss=rss)
+
+
+def write_lammps(path_dir, spheres, dt, steps):
+    top = max(z + r for (_, _, z, r) in spheres)
+    with open(os.path.join(path_dir, "packing.data"), "w") as f:
+        f.write("colza oedometer packing\n\n%d atoms\n1 atom types\n\n" % len(spheres))
+        f.write("-0.06 0.06 xlo xhi\n-0.06 0.06 ylo yhi\n-0.005 %.6f zlo zhi\n\nAtoms # sphere\n\n" % (top + 0.01))
+        for k, (x, y, z, r) in enumerate(spheres):
+            f.write("%d 1 %.17g %.17g %.17g %.17g %.17g\n" % (k + 1, 2 * r, DENSITY, x, y, z))
+    kn, kt = series(KN, KN), series(KS, KS)
+    knw, ktw = series(KN, KN_W), series(KS, KS_W)
+    wall = f"hooke/history {knw!r} {ktw!r} 0.0 0.0 {MU_W} 1"
+    with open(os.path.join(path_dir, "in.oedometer"), "w") as f:
+        f.write(f"""# generated by tests/bench/compare_codes.py
+units si
+atom_style sphere
+atom_modify map array
+boundary f f f
+newton off
+comm_modify vel yes
+read_data packing.data
+pair_style gran/hooke/history {kn!r} {kt!r} 0.0 0.0 {MU} 1
+pair_coeff * *
+neighbor {SKIN} bin
+neigh_modify delay 0 every 1 check yes
+timestep {dt!r}
+fix integ all nve/sphere
+fix grav all gravity 9.81 vector 0 0 -1
+fix bottom all wall/gran {wall} zplane 0.0 NULL
+fix envelope all wall/gran {wall} zcylinder {CYL_R}
+variable dz equal -{PISTON_SPEED * dt!r}*elapsed
+region piston plane 0.0 0.0 {top!r} 0.0 0.0 -1.0 side in move NULL NULL v_dz units box
+fix piston all wall/gran/region {wall} region piston
+thermo_modify lost ignore
+thermo 5000
+run {steps}
+""")
+
+
+def run_lammps(spheres, dt, steps, work):
+    d = os.path.join(work, "lammps")
+    os.makedirs(d, exist_ok=True)
+    write_lammps(d, spheres, dt, steps)
+    env_cmd = ["env", "OMP_NUM_THREADS=1", "lmp", "-in", "in.oedometer", "-log", "log.lammps"]
+    out, err, rss, wall = run_timed(env_cmd, d, os.path.join(work, "lammps.log"))
+    m = re.search(r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms", out)
+    if not m:
+        sys.exit(f"could not read the LAMMPS loop time, see {work}/lammps.log")
+    return dict(code="LAMMPS", particles=int(m.group(3)), steps=int(m.group(2)), seconds=float(m.group(1)), rss=rss)
+
+
+def write_yade(path, packing, dt, steps):
+    top_expr = "max(s[2] + s[3] for s in spheres)"
+    r_mean = "sum(s[3] for s in spheres) / len(spheres)"
+    with open(path, "w") as f:
+        f.write(f"""# generated by tests/bench/compare_codes.py (run with: yade -n -j 1 -x this.py)
+import math, time
+spheres = []
+for line in open({packing!r}):
+    line = line.strip()
+    if line and not line.startswith('#'):
+        spheres.append(tuple(float(v) for v in line.split()[:4]))
+top = {top_expr}
+r_mean = {r_mean}
+# Ip2_FrictMat_FrictMat_FrictPhys: Kn = 2 E1 R1 E2 R2 / (E1 R1 + E2 R2), Ks = poisson Kn.
+# E = kn_entity / (2 R_mean) gives Kn ~ kn/2 between two particles (colza's series rule).
+E = {KN} / (2.0 * r_mean)
+mat = O.materials.append(FrictMat(young=E, poisson={KS / KN!r}, frictionAngle=math.atan({MU}), density={DENSITY}))
+wmat = O.materials.append(FrictMat(young={KN_W} / (2.0 * r_mean), poisson={KS_W / KN_W!r},
+                                   frictionAngle=math.atan({MU_W}), density=1000.0))
+for (x, y, z, r) in spheres:
+    O.bodies.append(sphere((x, y, z), r, material=mat))
+O.bodies.append(wall(0.0, axis=2, sense=1, material=wmat))
+piston = wall(top, axis=2, sense=-1, material=wmat)
+piston.state.vel = Vector3(0, 0, -{PISTON_SPEED!r})
+pid = O.bodies.append(piston)
+O.bodies.append(geom.facetCylinder(center=(0, 0, 0.5 * (top + 0.01)), radius={CYL_R}, height=top + 0.01,
+                                   segmentsNumber=48, wallMask=4, material=wmat))
+O.engines = [
+    ForceResetter(),
+    InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb(), Bo1_Facet_Aabb()], verletDist={SKIN}),
+    InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
+                    [Ip2_FrictMat_FrictMat_FrictPhys()], [Law2_ScGeom_FrictPhys_CundallStrack()]),
+    NewtonIntegrator(damping={DAMPING}, gravity=(0, 0, -9.81)),
+]
+O.dt = {dt!r}
+t0 = time.perf_counter()
+O.run({steps}, True)
+t1 = time.perf_counter()
+print('COLZA_BENCH particles=%d steps=%d seconds=%.6f' % (len(spheres), O.iter, t1 - t0))
+""")
+
+
+def run_yade(packing, dt, steps, work):
+    d = os.path.join(work, "yade")
+    os.makedirs(d, exist_ok=True)
+    script = os.path.join(d, "oedometer_bench.py")
+    write_yade(script, os.path.abspath(packing), dt, steps)
+    out, err, rss, _ = run_timed(["yade", "-n", "-j", "1", "-x", script], d, os.path.join(work, "yade.log"))
+    m = re.search(r"COLZA_BENCH particles=(\d+) steps=(\d+) seconds=([0-9.eE+-]+)", out + err)
+    if not m:
+        sys.exit(f"could not read the YADE timing, see {work}/yade.log")
+    return dict(code="YADE", particles=int(m.group(1)), steps=int(m.group(2)), seconds=float(m.group(3)), rss=rss)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--colza", default="build/src/colza")
+    ap.add_argument("--packing", help="settled packing (x y z r); default: prepared once with colza in --work")
+    ap.add_argument("--work", default="/tmp/colza-compare")
+    ap.add_argument("--dt", type=float, default=1e-5, help="fixed time step for every code (s)")
+    ap.add_argument("--steps", type=int, default=20000)
+    ap.add_argument("--threads", type=int, default=1, help="colza threads (YADE and LAMMPS run on one)")
+    ap.add_argument("--skip-yade", action="store_true")
+    ap.add_argument("--skip-lammps", action="store_true")
+    a = ap.parse_args()
+    colza = os.path.abspath(a.colza)
+    os.makedirs(a.work, exist_ok=True)
+    packing = os.path.abspath(a.packing) if a.packing else prepare_packing(colza, a.work)
+    spheres = read_packing(packing)
+
+    rows = [run_colza(colza, packing, a.dt, a.steps, a.work, a.threads)]
+    steps = rows[0]["steps"]
+    if not a.skip_lammps:
+        if shutil.which("lmp"):
+            rows.append(run_lammps(spheres, a.dt, steps, a.work))
+        else:
+            print("lmp not found: LAMMPS skipped", file=sys.stderr)
+    if not a.skip_yade:
+        if shutil.which("yade"):
+            rows.append(run_yade(packing, a.dt, steps, a.work))
+        else:
+            print("yade not found: YADE skipped", file=sys.stderr)
+
+    colza_rate = rows[0]["particles"] * rows[0]["steps"] / rows[0]["seconds"]
+    print(f"\noedometer loading from {packing}: dt = {a.dt:g} s, {steps} steps, one thread "
+          f"(colza --threads {a.threads})\n")
+    head = f"{'code':<8} {'particles':>9} {'steps':>7} {'wall s':>9} {'Mp-steps/s':>11} {'vs colza':>9} {'peak MB':>8}"
+    print(head)
+    print("-" * len(head))
+    for r in rows:
+        rate = r["particles"] * r["steps"] / r["seconds"]
+        rss = f"{r['rss'] / 1024:.1f}" if r["rss"] else "?"
+        print(f"{r['code']:<8} {r['particles']:>9} {r['steps']:>7} {r['seconds']:>9.2f} {rate / 1e6:>11.2f} "
+              f"{rate / colza_rate:>9.3f} {rss:>8}")
+
+
+if __name__ == "__main__":
+    main()
