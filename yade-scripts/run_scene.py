@@ -9,7 +9,7 @@
 # pK_w{x,y,z}, pK_f{x,y,z} and pK_t{x,y,z} (contact force and torque of step n, no gravity);
 # per wall w: wW_f{x,y,z} (force exerted by the particles on the wall) and wW_{x,y,z} (its
 # origin); then contacts, bonds and the energies. YADE has no equivalent of colza's
-# damping_dissipated, bond_break_lost and wall_work bookkeeping: those columns are NaN.
+# damping_dissipated, bond_break_lost, shear_break_released and wall_work bookkeeping: those columns are NaN.
 # OUTDIR/summary.json holds the wall time and the particle-steps per second.
 import builtins
 import math
@@ -32,7 +32,7 @@ def scene_columns(particles, walls):
             for a in ("x", "y", "z"):
                 names.append(f"w{w}_{q}{a}")
     names += ["contacts", "bonds", "kinetic_energy", "gravitational_energy", "elastic_normal_energy",
-              "elastic_shear_energy", "slip_dissipated", "damping_dissipated", "bond_break_lost", "wall_work"]
+              "elastic_shear_energy", "slip_dissipated", "damping_dissipated", "bond_break_lost", "shear_break_released", "wall_work"]
     return names
 
 
@@ -88,7 +88,7 @@ def main(argv):
             en += 0.5 * ph.normalForce.squaredNorm() / ph.kn
             es += 0.5 * ph.shearForce.squaredNorm() / ph.ks
         slip = sum(law.plasticDissipation() for law in laws)
-        row += [contacts, bonds, kin, grav, en, es, slip, math.nan, math.nan, math.nan]
+        row += [contacts, bonds, kin, grav, en, es, slip, math.nan, math.nan, math.nan, math.nan]
         rows.append(row)
 
     builtins.RECORD = record

@@ -28,7 +28,8 @@ struct ContactOutcome {
   Vec3 force_on_2 = Vec3::Zero();  // Fn n + Fs (N); body 1 gets the opposite
   bool carries_force = false;
   ContactEvent event = ContactEvent::kNone;
-  double slip_dissipation = 0.0;   // J, this step
+  double slip_dissipation = 0.0;   // J, this step (Coulomb sliding)
+  double bond_break_energy = 0.0;  // J, shear-spring energy released by a shear bond break this step
 };
 
 // Bond slot behaviour, one overload per bond implementation.
@@ -77,6 +78,7 @@ inline ContactOutcome evaluate_contact(const Normal& normal_law, const Tangentia
     fs -= fs.cross(h.normal.cross(k.normal));
     fs -= fs.cross(k.twist_angle * h.normal);  // twist about the previous normal, as YADE
   }
+  const Vec3 fs_carried = fs;
   // Step 3: trial shear force from the shear displacement increment.
   tangential_law.increment(p, fs, k.shear_increment);
   // Steps 4-5: bond or friction limit.
@@ -86,7 +88,12 @@ inline ContactOutcome evaluate_contact(const Normal& normal_law, const Tangentia
     out.event = ContactEvent::kBondBrokeTension;
     return out;
   }
-  if (bond_state != BondState::kHolds) out.slip_dissipation = tangential_law.limit(p, fn, fs);
+  if (bond_state != BondState::kHolds) {
+    const Vec3 fs_trial = fs;
+    const double slip = tangential_law.limit(p, fn, fs);
+    if (bond_state == BondState::kBrokeShear) out.bond_break_energy = tangential_law.released(p, fs_carried, fs_trial, fs);
+    else out.slip_dissipation = slip;
+  }
   // A bond broken in shear while in tension leaves an unbonded contact without overlap:
   // it carries no normal force (step 4) and is removed on the next step (YADE does the same).
   double fn_applied = fn;

@@ -46,6 +46,15 @@ struct CoulombTangential {
     return (trial - fs).dot(fs) / p.ks;
   }
   double energy(const PairParameters& p, const Vec3& fs) const { return 0.5 * fs.squaredNorm() / p.ks; }
+  // Energy that leaves the shear spring in a step whose force goes from `carried` (the
+  // previous force, carried into the new tangent plane) through `trial` to `capped` (J):
+  //   D = (F_carried + F_capped) . (F_trial - F_capped) / (2 Ks).
+  // It is the work of the applied forces over the step (trapezoid, as leapfrog integrates
+  // it) minus the change of stored energy; in steady sliding it equals F delta. Used for the
+  // drop of a shear bond break, where Fs falls from about Cs to mu Fn in one step.
+  double released(const PairParameters& p, const Vec3& carried, const Vec3& trial, const Vec3& capped) const {
+    return (carried + capped).dot(trial - capped) / (2.0 * p.ks);
+  }
 };
 
 using TangentialSlot = std::variant<CoulombTangential>;

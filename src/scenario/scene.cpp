@@ -19,7 +19,7 @@ std::vector<std::string> scene_columns(const std::vector<std::int64_t>& particle
       for (const char* a : axes) names.push_back(p + q + a);
   }
   for (const char* e : {"contacts", "bonds", "kinetic_energy", "gravitational_energy", "elastic_normal_energy",
-                        "elastic_shear_energy", "slip_dissipated", "damping_dissipated", "bond_break_lost",
+                        "elastic_shear_energy", "slip_dissipated", "damping_dissipated", "bond_break_lost", "shear_break_released",
                         "wall_work"})
     names.push_back(e);
   return names;
@@ -65,7 +65,7 @@ SceneResult run_scene(const RunConfig& c, Progress& progress) {
       row.insert(row.end(), {static_cast<double>(w.contacts.touching_particle_contacts() + w.contacts.touching_wall_contacts()),
                              static_cast<double>(w.contacts.bonded_contacts()), e.kinetic, e.gravitational,
                              e.elastic_normal, e.elastic_shear, l.slip_dissipated, l.damping_dissipated,
-                             l.bond_break_lost, l.wall_work});
+                             l.bond_break_lost, l.shear_break_released, l.wall_work});
       r.series.add_row(row);
     });
     if (n % 1000 == 0) progress.update(static_cast<double>(n) / total, "");

@@ -177,9 +177,11 @@ TEST(ContactLaw, ShearBreakJustAboveCsCapsToCoulombInTheSameStep) {
   // (scaling 2.75... by 1/2.75... rounds: equal to 1 within an ulp or two)
   EXPECT_NEAR((h.shear_force - Vec3(1.0, 0, 0)).norm(), 0.0, 1e-15);
   EXPECT_NEAR((o.force_on_2 - Vec3(1.0, 0, 2.0)).norm(), 0.0, 1e-15);
-  // Slip dissipation of the capping step, (trial - capped) . capped / Ks.
+  // The capping step's energy drop is the bond break's, not slip:
+  // (F_carried + F_capped) . (F_trial - F_capped) / (2 Ks) with carried 1.75, capped 1.
   const double trial = 1.75 - 512 * dus;
-  EXPECT_DOUBLE_EQ(o.slip_dissipation, (trial - 1.0) * 1.0 / 512);
+  EXPECT_EQ(o.slip_dissipation, 0.0);
+  EXPECT_DOUBLE_EQ(o.bond_break_energy, (1.75 + 1.0) * (trial - 1.0) / (2 * 512));
 
   // Just above Cs: stored Fs = 2 - 2^-10 N plus an increment of 2^-10 + 2^-20 N gives the
   // trial 2 + 2^-20 N > Cs: breaks; capped to mu Fn = 1 N.
