@@ -106,10 +106,13 @@ TEST_F(SmallOedometer, OtherSeedOtherPacking) {
   EXPECT_NE(read_file(out_ / "packing.txt"), read_file(other / "packing.txt"));
 }
 
-TEST_F(SmallOedometer, LoadingFromTheWrittenPackingReproducesTheLoadingStage) {
-  // The packing file holds the settled sample with 17 digits; loading from it at rest
-  // starts like the original run (which also starts loading from rest-ish state, so only
-  // the first contact force is compared loosely: same sample, same piston start).
+TEST_F(SmallOedometer, LoadingFromTheWrittenPackingStartsFromTheSameSample) {
+  // The packing file holds the settled sample with 17 significant digits (exact round trip),
+  // so loading from it starts from the same sample: same count, height and bulk density,
+  // bit for bit. The loading curves themselves are not compared: the original run carries
+  // its settled velocities and shear history into loading, the file does not, and a small
+  // packing under compression is chaotic (tiny differences grow), so no tolerance on the
+  // curve could be derived.
   const auto spheres = colza::read_packing((out_ / "packing.txt").string(), "test");
   const auto s = read_json(out_ / "summary.json");
   EXPECT_EQ(spheres.size(), s["particles"].get<std::size_t>());
@@ -119,11 +122,11 @@ TEST_F(SmallOedometer, LoadingFromTheWrittenPackingReproducesTheLoadingStage) {
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   const auto s2 = read_json(from_packing / "summary.json");
   EXPECT_EQ(s2["particles"], s["particles"]);
-  EXPECT_DOUBLE_EQ(s2["packing_height"].get<double>(), s["packing_height"].get<double>());
-  EXPECT_DOUBLE_EQ(s2["bulk_density"].get<double>(), s["bulk_density"].get<double>());
-  // Same sample and protocol: the curve coefficient c2 agrees within 10 %
-  // (velocities were zeroed and shear history dropped, so not bit for bit).
-  EXPECT_NEAR(s2["fit"]["c2"].get<double>() / s["fit"]["c2"].get<double>(), 1.0, 0.10);
+  EXPECT_EQ(s2["packing_height"].get<double>(), s["packing_height"].get<double>());
+  EXPECT_EQ(s2["bulk_density"].get<double>(), s["bulk_density"].get<double>());
+  EXPECT_EQ(s2["settling"]["steps"].get<int>(), 0);  // no generation or settling
+  EXPECT_EQ(s2["stop_reason"], "stop_force");
+  EXPECT_EQ(read_file(out_ / "packing.txt"), read_file(from_packing / "packing.txt"));
 }
 
 TEST_F(SmallOedometer, BondsAreInstalledBeforeLoadingWhenAsked) {
