@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <limits>
-#include <mutex>
 #include <numeric>
-#include <thread>
+
+#include "core/concurrent.hpp"
 
 namespace colza::calibration {
 
@@ -182,33 +181,7 @@ void validate_problem(const Problem& p, bool sequential) {
 std::vector<Eigen::VectorXd> evaluate_batch(const ForwardModel& model, const std::vector<Eigen::VectorXd>& points,
                                             int jobs) {
   std::vector<Eigen::VectorXd> out(points.size());
-  std::mutex mutex;
-  std::exception_ptr failure;
-  std::size_t next = 0;
-  auto worker = [&]() {
-    while (true) {
-      std::size_t k;
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (next >= points.size() || failure) return;
-        k = next++;
-      }
-      try {
-        Eigen::VectorXd y = model(points[k]);
-        std::lock_guard<std::mutex> lock(mutex);
-        out[k] = std::move(y);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!failure) failure = std::current_exception();
-      }
-    }
-  };
-  const int n = std::max(1, std::min<int>(jobs, static_cast<int>(points.size())));
-  std::vector<std::thread> pool;
-  for (int j = 1; j < n; ++j) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  run_concurrently(points.size(), jobs, [&](std::size_t k) { out[k] = model(points[k]); });
   return out;
 }
 

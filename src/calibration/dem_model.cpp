@@ -7,6 +7,7 @@
 #include <toml++/toml.h>
 
 #include "analysis/mohr_coulomb.hpp"
+#include "io/fingerprint.hpp"
 #include "io/output_dir.hpp"
 #include "io/packing_file.hpp"
 #include "io/summary.hpp"
@@ -17,13 +18,6 @@ namespace colza::calibration {
 
 namespace fs = std::filesystem;
 
-std::string fingerprint_text(const std::string& text) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char ch : text) h = (h ^ ch) * 1099511628211ull;
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
 
 namespace {
 
@@ -45,15 +39,6 @@ std::string sample_fingerprint(const RunConfig& c) {
   return fingerprint_text(text.str());
 }
 
-void write_text_atomically(const fs::path& file, const std::string& text) {
-  const fs::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream o(tmp);
-    o << text;
-    if (!o) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, file);
-}
 
 }  // namespace
 

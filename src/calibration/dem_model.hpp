@@ -53,7 +53,4 @@ class DemModel {
   std::string packing_path_, packing_fp_, packing_note_;
 };
 
-// FNV-1a 64 of a text, as 16 hex digits.
-std::string fingerprint_text(const std::string& text);
-
 }  // namespace colza::calibration

@@ -2,15 +2,15 @@
 // config, concurrently up to --jobs, resuming loads already finished).
 #include <chrono>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
 #include <sstream>
-#include <thread>
 
 #include "analysis/mohr_coulomb.hpp"
 #include "cli/command_common.hpp"
+#include "core/concurrent.hpp"
+#include "io/fingerprint.hpp"
 #include "io/hdf5_writer.hpp"
 #include "io/output_dir.hpp"
 #include "io/packing_file.hpp"
@@ -30,11 +30,7 @@ std::string config_fingerprint(const RunConfig& c) {
   if (auto* box = doc["shear_box"].as_table()) box->erase("normal_stresses");
   std::ostringstream text;
   text << doc;
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char ch : text.str()) h = (h ^ ch) * 1099511628211ull;
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
+  return fingerprint_text(text.str());
 }
 
 std::string load_dir_name(double sigma) {
@@ -90,17 +86,6 @@ void print_load(const ShearLoadResult& r) {
               total_wall_seconds(r.stages));
 }
 
-// Writes `text` to `file` atomically (temporary name, then rename).
-void write_atomically(const fs::path& file, const std::string& text) {
-  const fs::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream o(tmp);
-    o << text;
-    if (!o) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, file);
-}
-
 }  // namespace
 
 void run_shear_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging& out) {
@@ -147,7 +132,7 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
                            {"particles_generated", sample.generated},
                            {"settling_converged", sample.settling.converged},
                            {"stages", stages_json(sample.stages)}};
-    write_atomically(sample_info, info.dump(2) + "\n");
+    write_text_atomically(sample_info, info.dump(2) + "\n");
   }
   std::printf("shear series: %zu particles (%zu generated)%s, %zu loads, %d job(s)\n", sample.particles.size(),
               sample.generated, sample_reused ? ", sample reused" : "", c.shear_box.normal_stresses.size(), opt.jobs);
@@ -171,42 +156,22 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
     }
     todo.push_back(k);
   }
-  std::mutex mutex;
-  std::exception_ptr failure;
-  std::size_t next = 0;
-  auto worker = [&]() {
-    while (true) {
-      std::size_t k;
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (next >= todo.size() || failure) return;
-        k = todo[next++];
-      }
-      try {
-        Progress load_progress(!opt.quiet && opt.jobs <= 1);
-        const ShearLoadResult r = run_shear_load(c, sample, loads[k], load_progress);
-        nlohmann::json s = load_summary(c, sample, r, opt.threads);
-        OutputStaging out(dir / load_dir_name(loads[k]), true);
-        write_load(out, c, r, s);
-        out.commit();
-        std::lock_guard<std::mutex> lock(mutex);
-        strength[k] = r.shear_strength;
-        load_json[k] = s;
-        load_json[k]["reused"] = false;
-        print_load(r);
-        std::fflush(stdout);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!failure) failure = std::current_exception();
-      }
-    }
-  };
-  const int jobs = std::max(1, std::min<int>(opt.jobs, static_cast<int>(todo.size())));
-  std::vector<std::thread> pool;
-  for (int j = 1; j < jobs; ++j) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  std::mutex mutex;  // guards the per-load results and stdout
+  run_concurrently(todo.size(), opt.jobs, [&](std::size_t t) {
+    const std::size_t k = todo[t];
+    Progress load_progress(!opt.quiet && opt.jobs <= 1);
+    const ShearLoadResult r = run_shear_load(c, sample, loads[k], load_progress);
+    nlohmann::json s = load_summary(c, sample, r, opt.threads);
+    OutputStaging out(dir / load_dir_name(loads[k]), true);
+    write_load(out, c, r, s);
+    out.commit();
+    std::lock_guard<std::mutex> lock(mutex);
+    strength[k] = r.shear_strength;
+    load_json[k] = s;
+    load_json[k]["reused"] = false;
+    print_load(r);
+    std::fflush(stdout);
+  });
 
   // --- Mohr-Coulomb line ----------------------------------------------------------
   nlohmann::json s = common_summary(c, "shear-series", opt.threads);

@@ -1,6 +1,8 @@
 #include "io/output_dir.hpp"
 
 #include <algorithm>
+#include <fstream>
+#include <stdexcept>
 #include <unistd.h>
 
 #include "config/config_error.hpp"
@@ -15,6 +17,16 @@ void check_output_dir(const fs::path& dir, bool overwrite) {
     throw ConfigError("--out", dir.string(), "exists and is not a directory");
   if (!overwrite && fs::exists(dir / "summary.json", ec))
     throw ConfigError("--out", dir.string(), "already holds a result (summary.json); pass --force to replace it");
+}
+
+void write_text_atomically(const fs::path& file, const std::string& text) {
+  const fs::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream o(tmp);
+    o << text;
+    if (!o) throw std::runtime_error("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, file);
 }
 
 OutputStaging::OutputStaging(const fs::path& dir, bool overwrite) : dir_(dir) {

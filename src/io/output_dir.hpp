@@ -28,6 +28,9 @@ class OutputStaging {
   bool created_dir_ = false, committed_ = false;
 };
 
+// Writes `text` to `file` under a temporary name, then renames it into place.
+void write_text_atomically(const std::filesystem::path& file, const std::string& text);
+
 // Checks the output directory without creating anything (for early validation).
 void check_output_dir(const std::filesystem::path& dir, bool overwrite);
 
