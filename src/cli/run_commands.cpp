@@ -99,6 +99,7 @@ void run_scene_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging
   s["bonds_installed"] = r.bonds_installed;
   s["dt"] = r.dt;
   s["steps"] = r.steps;
+  s["stopped_by_condition"] = r.stopped_by_condition;
   s["wall_seconds"] = total_wall_seconds(r.stages);
   s["particle_steps_per_second"] = overall_rate(r.stages);
   s["stages"] = stages_json(r.stages);

@@ -163,6 +163,7 @@ SceneSpec read_scene(const ConfigNode& t, const ConfigReader& reader) {
   SceneSpec s;
   s.steps = t.integer("steps", 0, 1);
   if (!t.has("steps")) t.fail("steps", "is required (number of steps to run)");
+  s.stop_unbalanced_force = t.non_negative("stop_unbalanced_force", 0.0);
   s.record_interval = t.integer("record_interval", 1, 1);
   s.record_particles = t.integer_list("record_particles");
   s.packing_file = t.string("packing_file", "");

@@ -91,7 +91,10 @@ struct SceneParticle {
 };
 
 struct SceneSpec {                    // [scene]
-  std::int64_t steps = 0;
+  std::int64_t steps = 0;             // the run ends after this many steps at most
+  // Optional stop condition: end as soon as the mean unbalanced force per particle (N, as
+  // in settling) falls below this; 0 = run all `steps`.
+  double stop_unbalanced_force = 0.0;
   std::string packing_file;           // optional "x y z r" per line, full precision
   std::vector<SceneParticle> particles;
   std::vector<Wall> walls;

@@ -46,9 +46,16 @@ SceneResult run_scene(const RunConfig& c, Progress& progress) {
   progress.start_stage("scene");
   const std::uint64_t total = static_cast<std::uint64_t>(s.steps);
   std::vector<double> row;
-  for (std::uint64_t n = 0; n < total; ++n) {
+  std::uint64_t n = 0;
+  bool last = false;
+  for (; !last; ++n) {
     stepper.step(world, [&](const World& w) {
-      if (n % static_cast<std::uint64_t>(s.record_interval) != 0 && n + 1 != total) return;
+      // The stop condition looks at the unbalanced force of the previous step (known here).
+      const bool condition = s.stop_unbalanced_force > 0.0 && n > 0 &&
+                             stepper.last_integration().mean_unbalanced_force < s.stop_unbalanced_force;
+      r.stopped_by_condition = condition && n + 1 < total;
+      last = condition || n + 1 == total;
+      if (n % static_cast<std::uint64_t>(s.record_interval) != 0 && !last) return;
       row.clear();
       row.push_back(static_cast<double>(w.step));
       row.push_back(w.time);
@@ -71,9 +78,9 @@ SceneResult run_scene(const RunConfig& c, Progress& progress) {
     if (n % 1000 == 0) progress.update(static_cast<double>(n) / total, "");
   }
   progress.end_stage();
-  clock.count_steps(total, world.particles.size());
+  clock.count_steps(n, world.particles.size());
   r.stages.push_back(clock.finish());
-  r.steps = total;
+  r.steps = n;
   r.final_state = world.particles;
   return r;
 }

@@ -14,6 +14,7 @@ struct SceneResult {
   Table series;
   std::vector<StageTiming> stages;
   std::uint64_t steps = 0;
+  bool stopped_by_condition = false;  // scene.stop_unbalanced_force was reached before scene.steps
   double dt = 0.0;
   std::size_t bonds_installed = 0;
   ParticleArrays final_state;
