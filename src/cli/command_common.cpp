@@ -2,6 +2,8 @@
 
 #include "contact/slot_registry.hpp"
 #include "core/version.hpp"
+#include "io/hdf5_writer.hpp"
+#include "io/summary.hpp"
 
 namespace colza {
 
@@ -30,6 +32,23 @@ double overall_rate(const std::vector<StageTiming>& stages) {
   for (const auto& s : stages) ps += s.particle_steps;
   const double t = total_wall_seconds(stages);
   return t > 0.0 ? ps / t : 0.0;
+}
+
+void add_timing(nlohmann::json& summary, const std::vector<StageTiming>& stages) {
+  summary["wall_seconds"] = total_wall_seconds(stages);
+  summary["particle_steps_per_second"] = overall_rate(stages);
+  summary["stages"] = stages_json(stages);
+}
+
+void write_result_h5(const std::string& file, const std::string& scenario, const RunConfig& c,
+                     const nlohmann::json& summary, const std::string& table_group, const Table& table,
+                     std::initializer_list<NamedState> states) {
+  Hdf5Writer h5(file);
+  write_provenance(h5, scenario, c.seed, c.resolved_toml);
+  h5.attribute("summary_json", summary.dump());
+  h5.write_table(table_group, table);
+  for (const NamedState& st : states) h5.write_particles(st.group, *st.particles);
+  h5.close();
 }
 
 }  // namespace colza

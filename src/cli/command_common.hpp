@@ -5,6 +5,7 @@
 #include <vector>
 #include "cli/run_commands.hpp"
 #include "config/run_config.hpp"
+#include "io/table.hpp"
 #include "scenario/stage_timing.hpp"
 
 namespace colza {
@@ -13,6 +14,17 @@ namespace colza {
 nlohmann::json common_summary(const RunConfig& c, const std::string& scenario, int threads);
 double total_wall_seconds(const std::vector<StageTiming>& stages);
 double overall_rate(const std::vector<StageTiming>& stages);  // particle-steps per second
+// Sets wall_seconds, particle_steps_per_second and stages of a summary.
+void add_timing(nlohmann::json& summary, const std::vector<StageTiming>& stages);
+
+struct NamedState {
+  const char* group;  // e.g. "particles/final"
+  const ParticleArrays* particles;
+};
+// result.h5: provenance, the summary as an attribute, the recorded table and particle states.
+void write_result_h5(const std::string& file, const std::string& scenario, const RunConfig& c,
+                     const nlohmann::json& summary, const std::string& table_group, const Table& table,
+                     std::initializer_list<NamedState> states);
 
 void run_shear_scenario(const RunConfig& config, const RunOptions& options, class OutputStaging& out);
 // The series manages its own output directory (it resumes finished loads). Returns the exit code.

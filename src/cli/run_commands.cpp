@@ -55,21 +55,12 @@ void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputSta
   s["dt"] = r.dt_min;
   s["dt_max"] = r.dt_max;
   s["steps"] = r.steps;
-  s["wall_seconds"] = total_wall_seconds(r.stages);
-  s["particle_steps_per_second"] = overall_rate(r.stages);
-  s["stages"] = stages_json(r.stages);
+  add_timing(s, r.stages);
 
   write_csv(out.path("curve.csv"), r.curve);
   write_packing(out.path("packing.txt"), r.settled);
-  {
-    Hdf5Writer h5(out.path("result.h5"));
-    write_provenance(h5, "oedometer", c.seed, c.resolved_toml);
-    h5.attribute("summary_json", s.dump());
-    h5.write_table("curve", r.curve);
-    h5.write_particles("particles/settled", r.settled);
-    h5.write_particles("particles/final", r.final_state);
-    h5.close();
-  }
+  write_result_h5(out.path("result.h5"), "oedometer", c, s, "curve", r.curve,
+                  {{"particles/settled", &r.settled}, {"particles/final", &r.final_state}});
   write_json(out.path("summary.json"), s);
 
   std::printf("oedometer: %zu particles (%zu generated), bulk density %.1f kg/m^3, settling %s after %.3f s\n",
@@ -100,18 +91,9 @@ void run_scene_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging
   s["dt"] = r.dt;
   s["steps"] = r.steps;
   s["stopped_by_condition"] = r.stopped_by_condition;
-  s["wall_seconds"] = total_wall_seconds(r.stages);
-  s["particle_steps_per_second"] = overall_rate(r.stages);
-  s["stages"] = stages_json(r.stages);
+  add_timing(s, r.stages);
   write_csv(out.path("series.csv"), r.series);
-  {
-    Hdf5Writer h5(out.path("result.h5"));
-    write_provenance(h5, "scene", c.seed, c.resolved_toml);
-    h5.attribute("summary_json", s.dump());
-    h5.write_table("series", r.series);
-    h5.write_particles("particles/final", r.final_state);
-    h5.close();
-  }
+  write_result_h5(out.path("result.h5"), "scene", c, s, "series", r.series, {{"particles/final", &r.final_state}});
   write_packing(out.path("packing.txt"), r.final_state);
   write_json(out.path("summary.json"), s);
   std::printf("scene: %zu particles, %zu walls, %llu steps of %.4g s, %.2f s wall\n", r.final_state.size(),

@@ -59,21 +59,13 @@ nlohmann::json load_summary(const RunConfig& c, const ShearSample& sample, const
   s["bonds_broken_shear"] = r.bonds_broken_shear;
   s["dt"] = r.dt;
   s["steps"] = r.steps;
-  s["wall_seconds"] = total_wall_seconds(r.stages);
-  s["particle_steps_per_second"] = overall_rate(r.stages);
-  s["stages"] = stages_json(r.stages);
+  add_timing(s, r.stages);
   return s;
 }
 
 void write_load(OutputStaging& out, const RunConfig& c, const ShearLoadResult& r, const nlohmann::json& s) {
   write_csv(out.path("curve.csv"), r.curve);
-  Hdf5Writer h5(out.path("result.h5"));
-  write_provenance(h5, "shear", c.seed, c.resolved_toml);
-  h5.attribute("normal_stress", r.normal_stress_target);
-  h5.attribute("summary_json", s.dump());
-  h5.write_table("curve", r.curve);
-  h5.write_particles("particles/final", r.final_state);
-  h5.close();
+  write_result_h5(out.path("result.h5"), "shear", c, s, "curve", r.curve, {{"particles/final", &r.final_state}});
   write_json(out.path("summary.json"), s);
 }
 
@@ -96,8 +88,7 @@ void run_shear_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging
   nlohmann::json s = load_summary(c, sample, r, opt.threads);
   std::vector<StageTiming> stages = sample.stages;
   stages.insert(stages.end(), r.stages.begin(), r.stages.end());
-  s["wall_seconds"] = total_wall_seconds(stages);
-  s["stages"] = stages_json(stages);
+  add_timing(s, stages);
   write_load(out, c, r, s);
   std::printf("shear: %zu particles (%zu generated)\n", r.particles, sample.generated);
   print_load(r);
