@@ -431,6 +431,14 @@ class Model:
         ph.fragile = True
         ph.cohesionDisablesFriction = True
 
+    def install_bonds_if(self, *moments):
+        """Installs bonds when the config's bond slot is contact_bond and its bond_install is one
+        of `moments` (colza's scenarios do the same check); returns the number installed."""
+        ct = self.c["contact"]
+        if ct["bond"] == "contact_bond" and ct["bond_install"] in moments:
+            return self.install_bonds()
+        return 0
+
     def install_bonds(self):
         """colza's install_bonds: every particle pair with overlap >= -bond_gap is bonded
         (a pair within the gap becomes a bonded contact now)."""

@@ -76,10 +76,7 @@ def main(argv):
 
     builtins.RECORD = record
     m.build_engines("RECORD()")
-    installed = 0
-    ct = c["contact"]
-    if ct["bond"] == "contact_bond" and ct["bond_install"] in ("before_loading", "after_settling"):
-        installed = m.install_bonds()
+    installed = m.install_bonds_if("before_loading", "after_settling")
 
     O.timingEnabled = True
     t0 = time.perf_counter()

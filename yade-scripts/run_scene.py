@@ -97,10 +97,7 @@ def main(argv):
     for law in loop.lawDispatcher.functors:
         law.traceEnergy = True  # slip dissipation, same bookkeeping as colza's slip_dissipated
         laws.append(law)
-    installed = 0
-    ct = c["contact"]
-    if ct["bond"] == "contact_bond" and ct["bond_install"] in ("before_loading", "after_settling"):
-        installed = m.install_bonds()
+    installed = m.install_bonds_if("before_loading", "after_settling")
 
     O.timingEnabled = True
     t0 = time.perf_counter()

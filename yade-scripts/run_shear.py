@@ -234,18 +234,14 @@ def main(argv):
 
     builtins.SHEAR_STEP = step
     m.build_engines("SHEAR_STEP()")
-    installed = 0
-    ct = c["contact"]
-    if ct["bond"] == "contact_bond" and ct["bond_install"] == "after_settling":
-        installed = m.install_bonds()
+    installed = m.install_bonds_if("after_settling")
 
     O.timingEnabled = True
     t0 = time.perf_counter()
     O.run()
     O.wait()
     consolidation_time = s["t"]
-    if ct["bond"] == "contact_bond" and ct["bond_install"] == "before_loading":
-        installed = m.install_bonds()
+    installed += m.install_bonds_if("before_loading")
     for i in lower:
         O.bodies[i].state.vel = cy.Vector3(b["shear_speed"], 0.0, 0.0)
     s["x0"] = lower_bottom_state.pos[0]

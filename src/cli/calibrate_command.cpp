@@ -32,26 +32,38 @@ std::string spec_key(const Spec& spec, const std::string& key) {
   return key;
 }
 
+// Runs `step`; bad input (ConfigError, CalibrationError) is printed naming file, key and
+// reason and turned into exit code 2. Returns 0 when `step` succeeded.
+template <class Step>
+int input_errors_to_exit_code(const CalibrateOptions& opt, const Spec& spec, Step&& step) {
+  try {
+    step();
+  } catch (const ConfigError& e) {
+    std::fprintf(stderr, "colza: error: %s\n", e.what());
+    return 2;
+  } catch (const CalibrationError& e) {
+    std::fprintf(stderr, "colza: error: %s: key '%s': %s\n", opt.spec_path.c_str(), spec_key(spec, e.key()).c_str(),
+                 e.what());
+    return 2;
+  }
+  return 0;
+}
+
 }  // namespace
 
 int calibrate_command(const CalibrateOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
   Spec spec;
-  try {
-    if (opt.spec_path.empty()) throw ConfigError("--spec", "", "a calibration spec is required");
-    spec = read_spec(opt.spec_path);
-    if (opt.stage != to_string(spec.stage))
-      throw ConfigError(opt.spec_path, "stage", "the spec is for stage \"" + std::string(to_string(spec.stage)) +
-                                                    "\", the command asked for \"" + opt.stage + "\"");
-    validate_problem(spec.problem, opt.mode == "sequential");
-    check_output_dir(opt.out_dir, opt.force);
-  } catch (const ConfigError& e) {
-    std::fprintf(stderr, "colza: error: %s\n", e.what());
-    return 2;
-  } catch (const CalibrationError& e) {
-    std::fprintf(stderr, "colza: error: %s: key '%s': %s\n", opt.spec_path.c_str(), spec_key(spec, e.key()).c_str(), e.what());
-    return 2;
-  }
+  if (const int code = input_errors_to_exit_code(opt, spec, [&] {
+        if (opt.spec_path.empty()) throw ConfigError("--spec", "", "a calibration spec is required");
+        spec = read_spec(opt.spec_path);
+        if (opt.stage != to_string(spec.stage))
+          throw ConfigError(opt.spec_path, "stage", "the spec is for stage \"" + std::string(to_string(spec.stage)) +
+                                                        "\", the command asked for \"" + opt.stage + "\"");
+        validate_problem(spec.problem, opt.mode == "sequential");
+        check_output_dir(opt.out_dir, opt.force);
+      }))
+    return code;
   for (const auto& w : spec.warnings) std::fprintf(stderr, "colza: warning: %s\n", w.c_str());
 
   const bool verbose = !opt.quiet;
@@ -69,16 +81,11 @@ int calibrate_command(const CalibrateOptions& opt) {
   LoopOptions loop;
   loop.jobs = opt.jobs;
   CalibrationResult result;
-  try {
-    result = opt.mode == "sequential" ? calibrate_sequential(spec.problem, model, loop)
-                                      : calibrate_paper(spec.problem, model, loop);
-  } catch (const ConfigError& e) {
-    std::fprintf(stderr, "colza: error: %s\n", e.what());
-    return 2;
-  } catch (const CalibrationError& e) {
-    std::fprintf(stderr, "colza: error: %s: key '%s': %s\n", opt.spec_path.c_str(), spec_key(spec, e.key()).c_str(), e.what());
-    return 2;
-  }
+  if (const int code = input_errors_to_exit_code(opt, spec, [&] {
+        result = opt.mode == "sequential" ? calibrate_sequential(spec.problem, model, loop)
+                                          : calibrate_paper(spec.problem, model, loop);
+      }))
+    return code;
 
   ReportContext ctx;
   ctx.stage = to_string(spec.stage);
