@@ -59,6 +59,7 @@ class PairTable {
     assert(p < n_particle_ && w < n_wall_);
     return pw_[p * n_wall_ + w];
   }
+  std::size_t particle_material_count() const { return n_particle_; }
   StiffnessRule rule() const { return rule_; }
 
  private:

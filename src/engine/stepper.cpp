@@ -8,6 +8,8 @@
 #endif
 
 #include "contact/contact_law.hpp"
+#include "engine/pair_batch.hpp"
+#include "engine/pair_force.hpp"
 
 namespace colza {
 
@@ -29,6 +31,15 @@ void Stepper::update_time_step(World& world) {
 }
 
 namespace {
+
+using detail::add_to;
+using detail::cross;
+using detail::particle_pair_force;
+using detail::sub_from;
+using detail::V3;
+using detail::vec;
+using detail::kHasBatchedKernel;
+using detail::particle_pairs_batched;
 
 // Below this many candidate pairs per thread the force loop runs serially (threading
 // overhead would dominate; also keeps tiny unit-test systems on the reference path).
@@ -78,109 +89,77 @@ struct LogSink {
   void event(ContactEvent e) { count_event(e, broken_tension, broken_shear); }
 };
 
-// Plain three-component arithmetic for the pair geometry. Every component is computed with
-// the same IEEE operations in the same order as the Eigen expressions of the reference loop
-// (element-wise ops; dot = (x0 y0 + x1 y1) + x2 y2; cross as Eigen's OrthoMethods), so the
-// results are the same bits; it only avoids Eigen's packet shuffles on 3-vectors under SSE2.
-struct V3 {
-  double x, y, z;
+// Where a pair's force goes. Serial: straight onto the bodies (body 2 gets +f and +t_j,
+// body 1 gets -f and -t_i). Threaded: into per-pair buffers, gathered per particle later.
+struct ScatterToBodies {
+  Vec3* force;
+  Vec3* torque;
+  void carries(std::size_t, Index i, Index j, const V3& f, const V3& t_i, const V3& t_j) {
+    add_to(force[j], f);
+    sub_from(force[i], f);
+    add_to(torque[j], t_j);
+    sub_from(torque[i], t_i);
+  }
+  void none(std::size_t) {}
 };
-inline V3 v3(const Vec3& v) { return {v[0], v[1], v[2]}; }
-inline Vec3 vec(const V3& v) { return Vec3(v.x, v.y, v.z); }
-inline V3 operator+(const V3& a, const V3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline V3 operator-(const V3& a, const V3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline V3 operator*(double s, const V3& a) { return {s * a.x, s * a.y, s * a.z}; }
-inline V3 operator*(const V3& a, double s) { return {a.x * s, a.y * s, a.z * s}; }
-inline V3 operator/(const V3& a, double s) { return {a.x / s, a.y / s, a.z / s}; }
-inline double dot(const V3& a, const V3& b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
-inline V3 cross(const V3& a, const V3& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-inline void add_to(Vec3& acc, const V3& a) {
-  acc[0] += a.x;
-  acc[1] += a.y;
-  acc[2] += a.z;
-}
-inline void sub_from(Vec3& acc, const V3& a) {
-  acc[0] -= a.x;
-  acc[1] -= a.y;
-  acc[2] -= a.z;
-}
+struct StoreByPair {
+  Vec3* pair_force;
+  Vec3* torque_1;
+  Vec3* torque_2;
+  void carries(std::size_t c, Index, Index, const V3& f, const V3& t_i, const V3& t_j) {
+    pair_force[c] = vec(f);
+    torque_1[c] = Vec3(-t_i.x, -t_i.y, -t_i.z);
+    torque_2[c] = vec(t_j);
+  }
+  void none(std::size_t c) {
+    pair_force[c].setZero();
+    torque_1[c].setZero();
+    torque_2[c].setZero();
+  }
+};
 
-// Geometry and contact law of one particle pair (i < j): the arithmetic of the reference
-// force loop, expression for expression. Returns false when the pair carries no force;
-// otherwise f = force on body 2 (j), and arm_i, arm_j the lever arms.
-template <class Normal, class Tangential, class Bond, class Sink>
-[[gnu::always_inline]] inline bool particle_pair_force(const Normal& normal_law, const Tangential& tangential_law,
+// Particle pairs [begin, end) in pair order: the batched kernel for the built-in law, the
+// scalar reference for any other slot combination (same results, see pair_batch.hpp).
+template <class Normal, class Tangential, class Bond, class Out, class Sink>
+[[gnu::always_inline]] inline void particle_pair_range(const Normal& normal_law, const Tangential& tangential_law,
                                                        const Bond& bond_law, bool bond_new_contacts,
                                                        const ParticleArrays& p, const PairTable& pairs, double dt,
-                                                       double half_dt, Index i, Index j, ContactHistory& h, V3& f,
-                                                       V3& arm_i, V3& arm_j, Sink& sink) {
-  const V3 xi = v3(p.position[i]), xj = v3(p.position[j]);
-  const V3 d = xj - xi;
-  const double ri = p.radius[i], rj = p.radius[j];
-  const double dist2 = dot(d, d);
-  const double reach = ri + rj;
-  if (!h.touching && dist2 >= reach * reach) return false;  // candidate, not in contact
-  const double dist = std::sqrt(dist2);
-  const V3 n = d / dist;
-  const double overlap = reach - dist;
-  const V3 point = xi + (ri - 0.5 * overlap) * n;  // middle of the overlap
-  arm_i = point - xi;
-  arm_j = point - xj;
-  const V3 wi = v3(p.angular_velocity[i]), wj = v3(p.angular_velocity[j]);
-  const V3 rel_vel = (v3(p.velocity[j]) + cross(wj, arm_j)) - (v3(p.velocity[i]) + cross(wi, arm_i));
-  ContactKinematics k;
-  k.normal = vec(n);
-  k.overlap = overlap;
-  k.shear_increment = vec((rel_vel - dot(rel_vel, n) * n) * dt);
-  k.twist_angle = half_dt * dot(wi + wj, v3(h.normal));  // previous normal (zero for a new contact)
-  const PairParameters& q = pairs.particle_particle(p.material[i], p.material[j]);
-  // State before the law runs: its stored energy is lost if the contact vanishes this step
-  // (evaluated only then; same expression as evaluating it up front).
-  const bool was_touching = h.touching != 0;
-  const double fn_before = h.normal_force;
-  const Vec3 fs_before = h.shear_force;
-  const ContactOutcome out = evaluate_contact(normal_law, tangential_law, bond_law, q, k, h, bond_new_contacts);
-  if (!out.carries_force) {
-    if (was_touching) sink.broken(normal_law.energy(q, fn_before) + tangential_law.energy(q, fs_before));
-    sink.event(out.event);
-    return false;
+                                                       const ParticlePairList& pp, std::size_t begin,
+                                                       std::size_t end, Out& out, Sink& sink) {
+  const double half_dt = 0.5 * dt;
+  const Index* first = pp.first.data();
+  const Index* second = pp.second.data();
+  ContactHistory* history = const_cast<ContactHistory*>(pp.history.data());
+  if constexpr (kHasBatchedKernel<Normal, Tangential>) {
+    if (pairs.particle_material_count() == 1) {
+      particle_pairs_batched(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt, first,
+                             second, history, begin, end, out, sink);
+      return;
+    }
   }
-  sink.event(out.event);
-  sink.slip(out.slip_dissipation);
-  sink.released(out.bond_break_energy);
-  f = v3(out.force_on_2);
-  return true;
+  for (std::size_t c = begin; c < end; ++c) {
+    const Index i = first[c], j = second[c];
+    V3 f, arm_i, arm_j;
+    if (particle_pair_force(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt, i, j,
+                            history[c], f, arm_i, arm_j, sink))
+      out.carries(c, i, j, f, cross(arm_i, f), cross(arm_j, f));
+    else
+      out.none(c);
+  }
 }
 
-// Reference (serial) particle-pair loop: forces scattered straight onto the bodies.
+// Serial particle-pair loop: forces scattered straight onto the bodies.
 template <class Normal, class Tangential, class Bond>
 [[gnu::flatten]] void particle_pairs_serial(const Normal& normal_law, const Tangential& tangential_law,
                                              const Bond& bond_law, bool bond_new_contacts, World& world,
                                              const PairTable& pairs, ForceLoopTotals& totals) {
   ParticleArrays& p = world.particles;
   p.clear_forces();
-  const double dt = world.dt, half_dt = 0.5 * dt;
   auto& pp = world.contacts.particle_pairs;
-  const std::size_t n_pairs = pp.size();
-  const Index* first = pp.first.data();
-  const Index* second = pp.second.data();
-  ContactHistory* history = pp.history.data();
-  Vec3* force = p.force.data();
-  Vec3* torque = p.torque.data();
+  ScatterToBodies out{p.force.data(), p.torque.data()};
   SerialSink sink{totals};
-  for (std::size_t c = 0; c < n_pairs; ++c) {
-    const Index i = first[c], j = second[c];
-    V3 f, arm_i, arm_j;
-    if (!particle_pair_force(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt, i, j,
-                             history[c], f, arm_i, arm_j, sink))
-      continue;
-    add_to(force[j], f);
-    sub_from(force[i], f);
-    add_to(torque[j], cross(arm_j, f));
-    sub_from(torque[i], cross(arm_i, f));
-  }
+  particle_pair_range(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, world.dt, pp, 0, pp.size(),
+                      out, sink);
 }
 
 // Threaded particle-pair loop. Phase 1: contiguous chunks of pairs (one per thread) store
@@ -195,12 +174,8 @@ template <class Normal, class Tangential, class Bond>
                                                const PairTable& pairs, ForceLoopTotals& totals, int threads,
                                                Stepper::GatherScratch& g) {
   ParticleArrays& p = world.particles;
-  const double dt = world.dt, half_dt = 0.5 * dt;
   auto& pp = world.contacts.particle_pairs;
   const std::size_t n_pairs = pp.size(), n = p.size();
-  const Index* first = pp.first.data();
-  const Index* second = pp.second.data();
-  ContactHistory* history = pp.history.data();
   Vec3* pair_force = g.pair_force.data();
   Vec3* torque_1 = g.torque_1.data();
   Vec3* torque_2 = g.torque_2.data();
@@ -217,22 +192,9 @@ template <class Normal, class Tangential, class Bond>
 #else
     const std::size_t t = 0, nt = 1;
 #endif
-    LogSink& sink = sinks[t];
-    for (std::size_t c = n_pairs * t / nt, end = n_pairs * (t + 1) / nt; c < end; ++c) {
-      const Index i = first[c], j = second[c];
-      V3 f, arm_i, arm_j;
-      if (!particle_pair_force(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt, i,
-                               j, history[c], f, arm_i, arm_j, sink)) {
-        pair_force[c].setZero();
-        torque_1[c].setZero();
-        torque_2[c].setZero();
-        continue;
-      }
-      const V3 t1 = cross(arm_i, f), t2 = cross(arm_j, f);
-      pair_force[c] = vec(f);
-      torque_1[c] = Vec3(-t1.x, -t1.y, -t1.z);
-      torque_2[c] = vec(t2);
-    }
+    StoreByPair out{pair_force, torque_1, torque_2};
+    particle_pair_range(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, world.dt, pp,
+                        n_pairs * t / nt, n_pairs * (t + 1) / nt, out, sinks[t]);
 #pragma omp barrier
     for (std::size_t i = n * t / nt, end = n * (t + 1) / nt; i < end; ++i) {
       Vec3 fi = Vec3::Zero(), ti = Vec3::Zero();

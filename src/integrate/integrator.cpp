@@ -16,14 +16,19 @@ namespace {
 // Acceleration of one degree of freedom under local damping, resolved at compile time
 // for the damping form (no branch on the form in the particle loop).
 // `load` is the unbalanced generalised force (N or N m), `mobility` is 1/m or 1/I.
+// sign(x) is written as (x > 0) - (x < 0) with doubles (sign_or_zero's value) so that the
+// particle loop vectorises.
 template <DampingForm kForm>
 inline double damped_acceleration(double load, double velocity, double mobility, double alpha, double dt) {
   if constexpr (kForm == DampingForm::kPfc) {
-    const double damping_force = -alpha * std::abs(load) * sign_or_zero(velocity);
+    const double sign_v = (velocity > 0.0 ? 1.0 : 0.0) - (velocity < 0.0 ? 1.0 : 0.0);
+    const double damping_force = -alpha * std::abs(load) * sign_v;
     return (load + damping_force) * mobility;
   } else {
     const double a = load * mobility;
-    return a * (1.0 - alpha * sign_or_zero(a * (velocity + 0.5 * dt * a)));
+    const double x = a * (velocity + 0.5 * dt * a);
+    const double sign_x = (x > 0.0 ? 1.0 : 0.0) - (x < 0.0 ? 1.0 : 0.0);
+    return a * (1.0 - alpha * sign_x);
   }
 }
 
@@ -32,54 +37,70 @@ struct RangeReport {
   double unbalanced_sum = 0.0, max_unbalanced = 0.0, damping_work = 0.0;
 };
 
-// Integrates particles [begin, end). The arithmetic and the order of the sums over the
-// range are those of the original single loop, so one range over all particles gives the
-// same bits. With `unbalanced_out`, |load| of particle i (0 for fixed ones) is stored there
-// instead of being summed (the caller sums it in particle order).
+// Integrates particles [begin, end) in blocks of kBlock. The state update runs one particle
+// per SIMD lane; what is summed over particles (unbalanced force, damping work) is stored per
+// lane and summed afterwards in particle order, in the order of the original single loop
+// (six damping terms per particle: x, rotation x, y, rotation y, z, rotation z), so one range
+// over all particles gives the same bits as that loop. With `unbalanced_out`, |load| of
+// particle i (0 for fixed ones) is stored there instead of being summed (the caller sums it
+// in particle order).
 template <DampingForm kForm>
 void integrate_range(ParticleArrays& p, const IntegratorSettings& s, double dt, std::size_t begin,
                      std::size_t end, RangeReport& r, double* unbalanced_out) {
+  constexpr std::size_t kBlock = 64;
   const double alpha = s.damping;
-  const Vec3 g = s.gravity;
+  const double gx = s.gravity[0], gy = s.gravity[1], gz = s.gravity[2];
   double unbalanced_sum = 0.0, max_unbalanced = r.max_unbalanced, damping_work = 0.0;
   std::size_t free_count = 0;
-  Vec3* position = p.position.data();
-  Vec3* velocity = p.velocity.data();
-  Vec3* spin = p.angular_velocity.data();
-  const Vec3* force = p.force.data();
-  const Vec3* torque = p.torque.data();
+  double* position = p.position.data()->data();  // Vec3 is three contiguous doubles
+  double* velocity = p.velocity.data()->data();
+  double* spin = p.angular_velocity.data()->data();
+  const double* force = p.force.data()->data();
+  const double* torque = p.torque.data()->data();
   const double* mass = p.mass.data();
   const double* inertia = p.inertia.data();
   const std::uint8_t* fixed = p.fixed.data();
-  for (std::size_t i = begin; i < end; ++i) {
-    if (fixed[i]) {
-      position[i] += dt * velocity[i];
-      if (unbalanced_out) unbalanced_out[i] = 0.0;
-      continue;
+  static_assert(sizeof(Vec3) == 3 * sizeof(double));
+  alignas(64) double unbalanced[kBlock];
+  alignas(64) double work[6][kBlock];  // damping work terms in the order they are summed
+  for (std::size_t block = begin; block < end; block += kBlock) {
+    const std::size_t count = std::min(kBlock, end - block);
+#pragma omp simd
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t i = block + k;
+      const bool is_fixed = fixed[i] != 0;
+      const double m = mass[i], in = inertia[i];
+      const double inv_m = 1.0 / m, inv_i = 1.0 / in;
+      const double load[3] = {force[3 * i] + m * gx, force[3 * i + 1] + m * gy, force[3 * i + 2] + m * gz};
+      unbalanced[k] = std::sqrt((load[0] * load[0] + load[1] * load[1]) + load[2] * load[2]);
+#pragma GCC unroll 3
+      for (int d = 0; d < 3; ++d) {
+        const double v = velocity[3 * i + d], w = spin[3 * i + d], t = torque[3 * i + d];
+        const double a = damped_acceleration<kForm>(load[d], v, inv_m, alpha, dt);
+        const double v_new = v + dt * a;
+        // Work of the damping force over the step, with the mean of the two mid-step velocities.
+        work[2 * d][k] = (a - load[d] * inv_m) * m * 0.5 * (v + v_new) * dt;
+        const double alpha_w = damped_acceleration<kForm>(t, w, inv_i, alpha, dt);
+        const double w_new = w + dt * alpha_w;
+        work[2 * d + 1][k] = (alpha_w - t * inv_i) * in * 0.5 * (w + w_new) * dt;
+        // A fixed particle keeps its prescribed velocity.
+        const double v_next = is_fixed ? v : v_new;
+        velocity[3 * i + d] = v_next;
+        spin[3 * i + d] = is_fixed ? w : w_new;
+        position[3 * i + d] += dt * v_next;
+      }
     }
-    const double m = mass[i], in = inertia[i];
-    const double inv_m = 1.0 / m, inv_i = 1.0 / in;
-    const Vec3 load = force[i] + m * g;
-    const double unbalanced = load.norm();
-    if (unbalanced_out) unbalanced_out[i] = unbalanced;
-    else unbalanced_sum += unbalanced;
-    max_unbalanced = std::max(max_unbalanced, unbalanced);
-    ++free_count;
-    Vec3& v = velocity[i];
-    Vec3& w = spin[i];
-    const Vec3& t = torque[i];
-    for (int d = 0; d < 3; ++d) {
-      const double a = damped_acceleration<kForm>(load[d], v[d], inv_m, alpha, dt);
-      const double v_new = v[d] + dt * a;
-      // Work of the damping force over the step, with the mean of the two mid-step velocities.
-      damping_work -= (a - load[d] * inv_m) * m * 0.5 * (v[d] + v_new) * dt;
-      v[d] = v_new;
-      const double alpha_w = damped_acceleration<kForm>(t[d], w[d], inv_i, alpha, dt);
-      const double w_new = w[d] + dt * alpha_w;
-      damping_work -= (alpha_w - t[d] * inv_i) * in * 0.5 * (w[d] + w_new) * dt;
-      w[d] = w_new;
+    for (std::size_t k = 0; k < count; ++k) {  // particle order
+      if (fixed[block + k]) {
+        if (unbalanced_out) unbalanced_out[block + k] = 0.0;
+        continue;
+      }
+      if (unbalanced_out) unbalanced_out[block + k] = unbalanced[k];
+      else unbalanced_sum += unbalanced[k];
+      max_unbalanced = std::max(max_unbalanced, unbalanced[k]);
+      ++free_count;
+      for (int term = 0; term < 6; ++term) damping_work -= work[term][k];
     }
-    position[i] += dt * v;
   }
   r.free_count += free_count;
   r.unbalanced_sum = unbalanced_sum;

@@ -57,6 +57,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   if (o.packing_file.empty()) {
     place_sample(world, c);
     r.particles_generated = world.particles.size();
+    store_in_space_order(world, stepper);
     stepper.prepare(world);
     r.settling = settle(world, stepper, c.sample.settle_unbalanced_force, c.sample.settle_max_time,
                         static_cast<std::uint64_t>(c.sample.settle_check_interval), progress);
@@ -70,6 +71,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   }
   if (c.contact.bond_install == BondInstallMoment::kAfterSettling) r.bonds_installed = install_bonds(world, c.contact.bond_gap);
   discard_above(world, stepper, o.cylinder_height);
+  if (o.packing_file.empty()) store_in_space_order(world, stepper);
   r.particles = world.particles.size();
   r.stages.push_back(prep_clock.finish());
   if (r.particles == 0)

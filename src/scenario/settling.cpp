@@ -1,7 +1,10 @@
 #include "scenario/settling.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+
+#include "neighbour/spatial_order.hpp"
 
 namespace colza {
 
@@ -49,6 +52,18 @@ std::size_t discard_above(World& world, Stepper& stepper, double z_top) {
   world.contacts.renumber_particles(old_to_new);
   stepper.invalidate_neighbours();
   return removed;
+}
+
+void store_in_space_order(World& world, Stepper& stepper) {
+  ParticleArrays& p = world.particles;
+  if (p.size() == 0) return;
+  const double diameter = 2.0 * *std::max_element(p.radius.begin(), p.radius.end());
+  const std::vector<Index> order = morton_cell_order(p, diameter);
+  std::vector<Index> old_to_new(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) old_to_new[order[k]] = static_cast<Index>(k);
+  p.permute(order);
+  world.contacts.renumber_particles(old_to_new);
+  stepper.invalidate_neighbours();
 }
 
 std::size_t install_bonds(World& world, double gap) {

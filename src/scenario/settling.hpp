@@ -24,6 +24,12 @@ SettleResult settle(World& world, Stepper& stepper, double threshold, double max
 // Returns the number removed.
 std::size_t discard_above(World& world, Stepper& stepper, double z_top);
 
+// Stores the particles in the Morton order of their cells (neighbour/spatial_order.hpp),
+// cells of one largest diameter, so that contacts join bodies close in memory; contacts and
+// their history follow the renumbering. Called on generated samples after generation and
+// after the discard; a packing read from a file keeps the file's order.
+void store_in_space_order(World& world, Stepper& stepper);
+
 // Puts a contact bond on every particle-particle pair touching now (un >= -gap).
 // Returns the number of bonds installed.
 std::size_t install_bonds(World& world, double gap);

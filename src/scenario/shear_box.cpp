@@ -72,11 +72,13 @@ ShearSample prepare_shear_sample(const RunConfig& c, Progress& progress) {
                           " spheres fit without overlap in the generation volume; lower sample.count or raise "
                           "shear_box.generation_height");
   s.generated = world.particles.size();
+  store_in_space_order(world, stepper);
   stepper.prepare(world);
   s.settling = settle(world, stepper, c.sample.settle_unbalanced_force, c.sample.settle_max_time,
                       static_cast<std::uint64_t>(c.sample.settle_check_interval), progress);
   clock.count_steps(s.settling.steps, s.generated);
   discard_above(world, stepper, b.height);
+  store_in_space_order(world, stepper);
   s.stages.push_back(clock.finish());
   if (world.particles.size() == 0) throw ConfigError(c.source, "sample.count", "no sphere is left below the box top");
   // The sample handed on is at rest, exactly as if read back from its packing file.

@@ -1,0 +1,216 @@
+// Batched particle-pair kernel: the contact law of physics.md section 2 for contacts that
+// persist through the step, computed lane by lane over small structure-of-arrays batches
+// (`#pragma omp simd`: one contact per SIMD lane; with AVX-512, eight at once).
+//
+// Why: the scalar loop is latency-bound (sqrt, three divisions, the tangent-plane rotation and
+// the Coulomb cap form one long dependency chain per contact); lanes run those chains side by
+// side. The lane arithmetic is the scalar reference (engine/pair_force.hpp) expression for
+// expression, with the same IEEE operations in the same order and no contraction into FMA
+// (-ffp-contract=off, see CMakeLists.txt), so every lane gives the bits the scalar function
+// gives. Lanes take the contacts that were touching at the start of the step; a candidate
+// pair that was not (it becomes a new contact if the spheres overlap now) and any contact
+// that changes state this step (a separation, a bond break) go through the scalar function
+// from their untouched history. Results are consumed in pair order, so the per-particle
+// sums are those of the reference loop.
+//
+// Used for the built-in slot combination (LinearNormal, CoulombTangential, NoBond or
+// ContactBond) with one particle material; anything else takes the scalar loop.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+#include "engine/pair_force.hpp"
+
+namespace colza::detail {
+
+template <class Normal, class Tangential>
+inline constexpr bool kHasBatchedKernel =
+    std::is_same_v<Normal, LinearNormal> && std::is_same_v<Tangential, CoulombTangential>;
+
+// Inputs and outputs of up to kLanes steady contacts, one array per component. The body
+// states are copied in by `load_lane` (explicit scalar gathers: GCC 12 does not emit
+// gather instructions for this loop).
+struct PairBatch {
+  static constexpr int kLanes = 32;
+  int count = 0;
+  std::size_t pair[kLanes];  // candidate-pair index of each lane, increasing
+  // inputs: body states and history (previous shear force and normal)
+  alignas(64) double xi[3][kLanes], xj[3][kLanes], vi[3][kLanes], vj[3][kLanes], wi[3][kLanes], wj[3][kLanes];
+  alignas(64) double ri[kLanes], rj[kLanes], bonded[kLanes];
+  alignas(64) double fs[3][kLanes], prev_normal[3][kLanes];
+  // outputs: new normal, Fn, new shear force, force on body 2, torques, slip energy
+  alignas(64) double normal[3][kLanes], fn[kLanes], fs_new[3][kLanes], f[3][kLanes];
+  alignas(64) double torque_i[3][kLanes], torque_j[3][kLanes], slip[kLanes];
+  alignas(64) double fallback[kLanes];  // 1: the contact changes state, recompute with the scalar law
+};
+
+// Loads contact c (touching at the start of the step) into the next lane.
+inline void load_lane(PairBatch& b, const ParticleArrays& p, std::size_t c, Index i, Index j,
+                      const ContactHistory& h) {
+  const int l = b.count++;
+  b.pair[l] = c;
+  const Vec3 &xi = p.position[i], &xj = p.position[j];
+  const Vec3 &vi = p.velocity[i], &vj = p.velocity[j];
+  const Vec3 &wi = p.angular_velocity[i], &wj = p.angular_velocity[j];
+  for (int d = 0; d < 3; ++d) {
+    b.xi[d][l] = xi[d];
+    b.xj[d][l] = xj[d];
+    b.vi[d][l] = vi[d];
+    b.vj[d][l] = vj[d];
+    b.wi[d][l] = wi[d];
+    b.wj[d][l] = wj[d];
+    b.fs[d][l] = h.shear_force[d];
+    b.prev_normal[d][l] = h.normal[d];
+  }
+  b.ri[l] = p.radius[i];
+  b.rj[l] = p.radius[j];
+  b.bonded[l] = h.bonded ? 1.0 : 0.0;
+}
+
+// The law for every lane (physics.md section 2, steps 1-6, for a contact that existed at the
+// start of the step), with the pair parameters q of the one particle material. Each line is
+// the scalar reference's expression; see pair_force.hpp and contact_law.hpp for the physics.
+template <class Bond>
+inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& q, double dt, double half_dt) {
+  constexpr bool kBonds = !std::is_same_v<Bond, NoBond>;
+  double cn = 0.0, cs = 0.0;
+  if constexpr (kBonds) {
+    cn = bond.normal_strength;
+    cs = bond.shear_strength;
+  }
+  const double kn = q.kn, ks = q.ks, mu = q.friction;
+  const int count = b.count;
+#pragma omp simd
+  for (int l = 0; l < count; ++l) {
+    // Geometry: normal n from 1 to 2, overlap un, contact point in the middle of the overlap.
+    const double dx = b.xj[0][l] - b.xi[0][l], dy = b.xj[1][l] - b.xi[1][l], dz = b.xj[2][l] - b.xi[2][l];
+    const double dist2 = (dx * dx + dy * dy) + dz * dz;
+    const double dist = std::sqrt(dist2);
+    const double nx = dx / dist, ny = dy / dist, nz = dz / dist;
+    const double overlap = (b.ri[l] + b.rj[l]) - dist;
+    const double centre_offset = b.ri[l] - 0.5 * overlap;
+    const double px = b.xi[0][l] + centre_offset * nx, py = b.xi[1][l] + centre_offset * ny,
+                 pz = b.xi[2][l] + centre_offset * nz;
+    const double aix = px - b.xi[0][l], aiy = py - b.xi[1][l], aiz = pz - b.xi[2][l];  // arm of body 1
+    const double ajx = px - b.xj[0][l], ajy = py - b.xj[1][l], ajz = pz - b.xj[2][l];  // arm of body 2
+    // Relative velocity of 2 with respect to 1 at the contact point: (vj + wj x aj) - (vi + wi x ai).
+    const double wix = b.wi[0][l], wiy = b.wi[1][l], wiz = b.wi[2][l];
+    const double wjx = b.wj[0][l], wjy = b.wj[1][l], wjz = b.wj[2][l];
+    const double rvx = (b.vj[0][l] + (wjy * ajz - wjz * ajy)) - (b.vi[0][l] + (wiy * aiz - wiz * aiy));
+    const double rvy = (b.vj[1][l] + (wjz * ajx - wjx * ajz)) - (b.vi[1][l] + (wiz * aix - wix * aiz));
+    const double rvz = (b.vj[2][l] + (wjx * ajy - wjy * ajx)) - (b.vi[2][l] + (wix * aiy - wiy * aix));
+    // Shear displacement increment dus = (vr - (vr.n) n) dt (m).
+    const double vn = (rvx * nx + rvy * ny) + rvz * nz;
+    const double sx = (rvx - vn * nx) * dt, sy = (rvy - vn * ny) * dt, sz = (rvz - vn * nz) * dt;
+    // Twist about the previous normal: dt/2 (w1 + w2) . n_old (rad).
+    const double hx = b.prev_normal[0][l], hy = b.prev_normal[1][l], hz = b.prev_normal[2][l];
+    const double twist = half_dt * (((wix + wjx) * hx + (wiy + wjy) * hy) + (wiz + wjz) * hz);
+    // Step 1: Fn = Kn un (N).
+    const double fn = kn * overlap;
+    // Step 2: rotate the stored shear force into the new tangent plane:
+    //   Fs -= Fs x (n_old x n);  Fs -= Fs x (twist n_old).
+    const double rx = hy * nz - hz * ny, ry = hz * nx - hx * nz, rz = hx * ny - hy * nx;
+    double fx = b.fs[0][l], fy = b.fs[1][l], fz = b.fs[2][l];
+    {
+      const double cx = fy * rz - fz * ry, cy = fz * rx - fx * rz, cz = fx * ry - fy * rx;
+      fx -= cx;
+      fy -= cy;
+      fz -= cz;
+    }
+    {
+      const double tx = twist * hx, ty = twist * hy, tz = twist * hz;
+      const double cx = fy * tz - fz * ty, cy = fz * tx - fx * tz, cz = fx * ty - fy * tx;
+      fx -= cx;
+      fy -= cy;
+      fz -= cz;
+    }
+    // Step 3: trial shear force Fs -= Ks dus (N).
+    fx -= ks * sx;
+    fy -= ks * sy;
+    fz -= ks * sz;
+    const double fs2 = (fx * fx + fy * fy) + fz * fz;
+    // Steps 4-5: an intact bond holds unless -Fn > Cn or |Fs| > Cs (those lanes fall back);
+    // an unbonded contact that lost its overlap falls back (it is removed); otherwise the
+    // Coulomb cap |Fs| <= mu max(Fn, 0) with slip energy (F_trial - F).F / Ks (J).
+    // (Bitwise & and | instead of && and ||: no branches, so the loop vectorises.)
+    const bool bonded = kBonds & (b.bonded[l] != 0.0);
+    const bool bond_breaks = (-fn > cn) | (fs2 > cs * cs);
+    const bool falls_back = (bonded & bond_breaks) | (!bonded & (overlap < 0.0));
+    const double max_fs = mu * std::max(fn, 0.0);
+    const bool slides = !bonded & (fs2 > max_fs * max_fs);
+    const double scale = max_fs / std::sqrt(fs2);
+    const double cx = slides ? fx * scale : fx, cy = slides ? fy * scale : fy, cz = slides ? fz * scale : fz;
+    b.slip[l] = slides ? (((fx - cx) * cx + (fy - cy) * cy) + (fz - cz) * cz) / ks : 0.0;
+    b.fallback[l] = falls_back ? 1.0 : 0.0;
+    // Step 6: force on body 2, F = Fn n + Fs, and the torques arm x F.
+    const double Fx = fn * nx + cx, Fy = fn * ny + cy, Fz = fn * nz + cz;
+    b.f[0][l] = Fx;
+    b.f[1][l] = Fy;
+    b.f[2][l] = Fz;
+    b.torque_i[0][l] = aiy * Fz - aiz * Fy;
+    b.torque_i[1][l] = aiz * Fx - aix * Fz;
+    b.torque_i[2][l] = aix * Fy - aiy * Fx;
+    b.torque_j[0][l] = ajy * Fz - ajz * Fy;
+    b.torque_j[1][l] = ajz * Fx - ajx * Fz;
+    b.torque_j[2][l] = ajx * Fy - ajy * Fx;
+    b.fs_new[0][l] = cx;
+    b.fs_new[1][l] = cy;
+    b.fs_new[2][l] = cz;
+    b.normal[0][l] = nx;
+    b.normal[1][l] = ny;
+    b.normal[2][l] = nz;
+    b.fn[l] = fn;
+  }
+}
+
+// Particle pairs [begin, end) through the batched kernel. `out.carries(c, i, j, f, t_i, t_j)`
+// receives, in pair order, the force f on body 2 (body 1 gets -f) and the torques
+// t_i = arm_i x f (body 1 gets -t_i) and t_j = arm_j x f; `out.none(c)` a pair without force.
+// Requires one particle material (the caller checks).
+template <class Normal, class Tangential, class Bond, class Out, class Sink>
+[[gnu::always_inline]] inline void particle_pairs_batched(const Normal& normal_law, const Tangential& tangential_law,
+                                                          const Bond& bond_law, bool bond_new_contacts,
+                                                          const ParticleArrays& p, const PairTable& pairs, double dt,
+                                                          double half_dt, const Index* first, const Index* second,
+                                                          ContactHistory* history, std::size_t begin, std::size_t end,
+                                                          Out& out, Sink& sink) {
+  const PairParameters& q = pairs.particle_particle(0, 0);
+  PairBatch b;
+  std::size_t c = begin;
+  while (c < end) {
+    const std::size_t batch_begin = c;
+    b.count = 0;
+    for (; c < end && b.count < PairBatch::kLanes; ++c)
+      if (history[c].touching) load_lane(b, p, c, first[c], second[c], history[c]);
+    compute_lanes(b, bond_law, q, dt, half_dt);
+    int l = 0;
+    for (std::size_t k = batch_begin; k < c; ++k) {
+      const Index i = first[k], j = second[k];
+      ContactHistory& h = history[k];
+      const bool in_lane = l < b.count && b.pair[l] == k;
+      if (in_lane && b.fallback[l] == 0.0) {  // steady contact: take the lane's result
+        h.shear_force = Vec3(b.fs_new[0][l], b.fs_new[1][l], b.fs_new[2][l]);
+        h.normal = Vec3(b.normal[0][l], b.normal[1][l], b.normal[2][l]);
+        h.normal_force = b.fn[l];
+        sink.slip(b.slip[l]);
+        out.carries(k, i, j, V3{b.f[0][l], b.f[1][l], b.f[2][l]},
+                    V3{b.torque_i[0][l], b.torque_i[1][l], b.torque_i[2][l]},
+                    V3{b.torque_j[0][l], b.torque_j[1][l], b.torque_j[2][l]});
+        ++l;
+        continue;
+      }
+      if (in_lane) ++l;
+      // Not touching at the start of the step (a new contact if the spheres overlap now), or
+      // a contact that changes state: the scalar reference law from the untouched history.
+      V3 f, arm_i, arm_j;
+      if (particle_pair_force(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt, i, j, h,
+                              f, arm_i, arm_j, sink))
+        out.carries(k, i, j, f, cross(arm_i, f), cross(arm_j, f));
+      else
+        out.none(k);
+    }
+  }
+}
+
+}  // namespace colza::detail

@@ -1,0 +1,88 @@
+// Geometry and contact law of one particle pair, scalar reference (physics.md section 2).
+// The batched kernel (engine/pair_batch.hpp) computes the same expressions lane by lane and
+// falls back to this function for every contact that changes state in the step.
+#pragma once
+#include <cmath>
+#include "contact/contact_law.hpp"
+#include "core/materials.hpp"
+#include "core/particles.hpp"
+
+namespace colza::detail {
+
+// Plain three-component arithmetic for the pair geometry. Every component is computed with
+// the same IEEE operations in the same order as the Eigen expressions of the reference loop
+// (element-wise ops; dot = (x0 y0 + x1 y1) + x2 y2; cross as Eigen's OrthoMethods), so the
+// results are the same bits; it only avoids Eigen's packet shuffles on 3-vectors under SSE2.
+struct V3 {
+  double x, y, z;
+};
+inline V3 v3(const Vec3& v) { return {v[0], v[1], v[2]}; }
+inline Vec3 vec(const V3& v) { return Vec3(v.x, v.y, v.z); }
+inline V3 operator+(const V3& a, const V3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline V3 operator-(const V3& a, const V3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline V3 operator*(double s, const V3& a) { return {s * a.x, s * a.y, s * a.z}; }
+inline V3 operator*(const V3& a, double s) { return {a.x * s, a.y * s, a.z * s}; }
+inline V3 operator/(const V3& a, double s) { return {a.x / s, a.y / s, a.z / s}; }
+inline double dot(const V3& a, const V3& b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
+inline V3 cross(const V3& a, const V3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline void add_to(Vec3& acc, const V3& a) {
+  acc[0] += a.x;
+  acc[1] += a.y;
+  acc[2] += a.z;
+}
+inline void sub_from(Vec3& acc, const V3& a) {
+  acc[0] -= a.x;
+  acc[1] -= a.y;
+  acc[2] -= a.z;
+}
+
+// Geometry and contact law of one particle pair (i < j): the arithmetic of the reference
+// force loop, expression for expression. Returns false when the pair carries no force;
+// otherwise f = force on body 2 (j), and arm_i, arm_j the lever arms.
+template <class Normal, class Tangential, class Bond, class Sink>
+[[gnu::always_inline]] inline bool particle_pair_force(const Normal& normal_law, const Tangential& tangential_law,
+                                                       const Bond& bond_law, bool bond_new_contacts,
+                                                       const ParticleArrays& p, const PairTable& pairs, double dt,
+                                                       double half_dt, Index i, Index j, ContactHistory& h, V3& f,
+                                                       V3& arm_i, V3& arm_j, Sink& sink) {
+  const V3 xi = v3(p.position[i]), xj = v3(p.position[j]);
+  const V3 d = xj - xi;
+  const double ri = p.radius[i], rj = p.radius[j];
+  const double dist2 = dot(d, d);
+  const double reach = ri + rj;
+  if (!h.touching && dist2 >= reach * reach) return false;  // candidate, not in contact
+  const double dist = std::sqrt(dist2);
+  const V3 n = d / dist;
+  const double overlap = reach - dist;
+  const V3 point = xi + (ri - 0.5 * overlap) * n;  // middle of the overlap
+  arm_i = point - xi;
+  arm_j = point - xj;
+  const V3 wi = v3(p.angular_velocity[i]), wj = v3(p.angular_velocity[j]);
+  const V3 rel_vel = (v3(p.velocity[j]) + cross(wj, arm_j)) - (v3(p.velocity[i]) + cross(wi, arm_i));
+  ContactKinematics k;
+  k.normal = vec(n);
+  k.overlap = overlap;
+  k.shear_increment = vec((rel_vel - dot(rel_vel, n) * n) * dt);
+  k.twist_angle = half_dt * dot(wi + wj, v3(h.normal));  // previous normal (zero for a new contact)
+  const PairParameters& q = pairs.particle_particle(p.material[i], p.material[j]);
+  // State before the law runs: its stored energy is lost if the contact vanishes this step
+  // (evaluated only then; same expression as evaluating it up front).
+  const bool was_touching = h.touching != 0;
+  const double fn_before = h.normal_force;
+  const Vec3 fs_before = h.shear_force;
+  const ContactOutcome out = evaluate_contact(normal_law, tangential_law, bond_law, q, k, h, bond_new_contacts);
+  if (!out.carries_force) {
+    if (was_touching) sink.broken(normal_law.energy(q, fn_before) + tangential_law.energy(q, fs_before));
+    sink.event(out.event);
+    return false;
+  }
+  sink.event(out.event);
+  sink.slip(out.slip_dissipation);
+  sink.released(out.bond_break_energy);
+  f = v3(out.force_on_2);
+  return true;
+}
+
+}  // namespace colza::detail
