@@ -46,6 +46,21 @@ def series(a, b):
     return a * b / (a + b)
 
 
+def ensure_installed(binary, package):
+    """True when `binary` is on PATH, installing Debian's `package` first if it is missing
+    (apt-get as root, or through sudo). Neither code is needed by colza's build or tests."""
+    if shutil.which(binary):
+        return True
+    apt = ["apt-get", "install", "-y", "--no-install-recommends", package]
+    if os.geteuid() != 0:
+        if not shutil.which("sudo"):
+            return False
+        apt = ["sudo"] + apt
+    print(f"{binary} not found: installing the Debian package {package} ...", file=sys.stderr)
+    subprocess.run(apt, env=dict(os.environ, DEBIAN_FRONTEND="noninteractive"), check=False)
+    return shutil.which(binary) is not None
+
+
 def read_packing(path):
     spheres = []
     with open(path) as f:
@@ -221,15 +236,15 @@ def main():
     rows = [run_colza(colza, packing, a.dt, a.steps, a.work, a.threads)]
     steps = rows[0]["steps"]
     if not a.skip_lammps:
-        if shutil.which("lmp"):
+        if ensure_installed("lmp", "lammps"):
             rows.append(run_lammps(spheres, a.dt, steps, a.work))
         else:
-            print("lmp not found: LAMMPS skipped", file=sys.stderr)
+            print("lmp not found and could not be installed: LAMMPS skipped", file=sys.stderr)
     if not a.skip_yade:
-        if shutil.which("yade"):
+        if ensure_installed("yade", "yade"):
             rows.append(run_yade(packing, a.dt, steps, a.work))
         else:
-            print("yade not found: YADE skipped", file=sys.stderr)
+            print("yade not found and could not be installed: YADE skipped", file=sys.stderr)
 
     colza_rate = rows[0]["particles"] * rows[0]["steps"] / rows[0]["seconds"]
     print(f"\noedometer loading from {packing}: dt = {a.dt:g} s, {steps} steps, one thread "
