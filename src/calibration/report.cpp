@@ -24,6 +24,7 @@ nlohmann::json calibration_summary(const Problem& p, const CalibrationResult& r,
   s["mode"] = r.mode;
   s["spec"] = ctx.spec_file;
   s["measured_file"] = ctx.measured_file;
+  if (!ctx.measured.is_null()) s["measured"] = ctx.measured;
   s["parameters"] = nlohmann::json::array();
   for (std::size_t j = 0; j < p.parameters.size(); ++j)
     s["parameters"].push_back({{"name", p.parameters[j].name},
@@ -107,6 +108,7 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
   if (!ctx.measured_file.empty()) o << "; measured data: `" << ctx.measured_file << "`";
   o << ".\n\n";
   if (!ctx.notes.empty()) o << ctx.notes << "\n\n";
+  if (!ctx.measured_section.empty()) o << ctx.measured_section << "\n";
   o << "Forward runs used: **" << r.runs.size() << "**";
   if (ctx.paper_design_runs) o << " (the paper's design on the same targets: " << ctx.paper_design_runs << " = design points + 1 validation)";
   o << "; wall time " << g(ctx.wall_seconds, 4) << " s.\n\n";

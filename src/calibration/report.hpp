@@ -17,6 +17,8 @@ struct ReportContext {
   double wall_seconds = 0.0;
   std::size_t paper_design_runs = 0;      // the paper's design on the same targets: design points + 1 validation
   std::vector<std::string> extra_warnings;
+  nlohmann::json measured;                // where the targets came from (summary.json "measured"), may be null
+  std::string measured_section;           // the same for report.md (markdown), may be empty
 };
 
 nlohmann::json calibration_summary(const Problem& problem, const CalibrationResult& result, const ReportContext& ctx);

@@ -118,56 +118,7 @@ std::string resolve(const std::string& spec_file, const std::string& value) {
   return p.lexically_normal().string();
 }
 
-std::vector<std::string> split_csv_line(const std::string& line) {
-  std::vector<std::string> cells;
-  std::istringstream s(line);
-  for (std::string c; std::getline(s, c, ',');) {
-    const auto b = c.find_first_not_of(" \t\r\"");
-    const auto e = c.find_last_not_of(" \t\r\"");
-    cells.push_back(b == std::string::npos ? "" : c.substr(b, e - b + 1));
-  }
-  return cells;
-}
-
 }  // namespace
-
-std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const std::vector<std::string>& columns,
-                                                  const std::string& spec_file, const std::string& key) {
-  std::ifstream in(csv);
-  if (!in) throw ConfigError(spec_file, key, "cannot open the measured data file " + csv);
-  std::string line;
-  // Header: the first line that is not empty and not a '#' comment.
-  while (std::getline(in, line) && (line.find_first_not_of(" \t\r") == std::string::npos || line[0] == '#')) {
-  }
-  const std::vector<std::string> header = split_csv_line(line);
-  std::vector<std::size_t> index;
-  for (const auto& c : columns) {
-    const auto it = std::find(header.begin(), header.end(), c);
-    if (it == header.end())
-      throw ConfigError(spec_file, key, csv + ": no column \"" + c + "\" in the header line \"" + line + "\"");
-    index.push_back(static_cast<std::size_t>(it - header.begin()));
-  }
-  std::vector<std::vector<double>> out(columns.size());
-  std::size_t row = 1;
-  while (std::getline(in, line)) {
-    ++row;
-    if (line.find_first_not_of(" \t\r") == std::string::npos || line[0] == '#') continue;
-    const auto cells = split_csv_line(line);
-    for (std::size_t k = 0; k < columns.size(); ++k) {
-      double v = 0.0;
-      try {
-        std::size_t used = 0;
-        v = std::stod(cells.at(index[k]), &used);
-        if (used != cells[index[k]].size() || !std::isfinite(v)) throw std::invalid_argument("");
-      } catch (const std::exception&) {
-        throw ConfigError(spec_file, key, csv + ": line " + std::to_string(row) + ": column \"" + columns[k] +
-                                              "\" is not a finite number");
-      }
-      out[k].push_back(v);
-    }
-  }
-  return out;
-}
 
 Spec read_spec(const std::string& path) {
   Spec s;
@@ -329,19 +280,52 @@ Spec read_spec(const std::string& path) {
     }
   } else {
     const double uc = m.positive("cohesion_uncertainty"), ut = m.positive("tan_phi_uncertainty");
-    s.measured_file = resolve(path, m.string("results", "", true));
-    if (!fs::exists(s.measured_file)) m.fail("results", "the measured shear results " + s.measured_file + " do not exist");
-    const auto cols = read_csv_columns(s.measured_file, {"normal_stress", "shear_strength"}, path, "measured.results");
-    std::set<double> distinct(cols[0].begin(), cols[0].end());
-    if (distinct.size() < 2)
-      m.fail("results", s.measured_file + ": needs shear strengths at two or more distinct normal stresses for "
-                                          "the Mohr-Coulomb line, got " + std::to_string(distinct.size()));
-    for (std::size_t k = 0; k < cols[0].size(); ++k) {
-      if (!(cols[0][k] > 0.0) || !(cols[1][k] > 0.0))
-        m.fail("results", s.measured_file + ": normal stress and shear strength must be > 0 (Pa)");
-      s.measured_points.push_back({cols[0][k], cols[1][k]});
+    const bool has_results = m.has("results"), has_curves = m.has("curves");
+    if (has_results && has_curves)
+      m.fail("curves", "give either the shear strengths (results) or one curve per normal load (curves), not both");
+    if (!has_results && !has_curves)
+      m.fail("results", "missing: name the measured shear strengths (results = \"file.csv\", columns normal_stress, "
+                        "shear_strength) or one curve per normal load ([[measured.curves]] with normal_stress and file)");
+    const std::string source_key = has_results ? "results" : "curves";
+    std::vector<double> sigma, tau;
+    if (has_results) {
+      s.measured_file = resolve(path, m.string("results", "", true));
+      if (!fs::exists(s.measured_file))
+        m.fail("results", "the measured shear results " + s.measured_file + " do not exist");
+      const auto cols = read_csv_columns(s.measured_file, {"normal_stress", "shear_strength"}, path, "measured.results");
+      sigma = cols[0], tau = cols[1];
+      for (std::size_t k = 0; k < sigma.size(); ++k)
+        if (!(sigma[k] > 0.0) || !(tau[k] > 0.0))
+          m.fail("results", s.measured_file + ": normal stress and shear strength must be > 0 (Pa)");
+    } else {
+      // One measured curve per normal load; its strength is derived over the model's strength window.
+      const toml::array* curves = m.get("curves")->as_array();
+      if (!curves || curves->empty())
+        m.fail("curves", "must be a non-empty array of tables ([[measured.curves]] with normal_stress and file)");
+      const StrengthWindow window{s.base.shear_box.strength_window_start, s.base.shear_box.strength_window_end};
+      for (std::size_t k = 0; k < curves->size(); ++k) {
+        const toml::table* t = (*curves)[k].as_table();
+        if (!t) m.fail("curves", "must be an array of tables ([[measured.curves]])");
+        const Node c{path, t, "measured.curves[" + std::to_string(k) + "]", {}};
+        const double normal_stress = c.positive("normal_stress");
+        const std::string file = resolve(path, c.string("file", "", true));
+        const MeasuredShearCurve curve =
+            read_measured_shear_curve(file, normal_stress, window, path, c.full("file"), s.warnings);
+        if (!(curve.shear_strength > 0.0))
+          c.fail("file", file + ": the mean shear stress over the strength window is " + fmt(curve.shear_strength) +
+                             " Pa; a shear strength must be > 0 (check the sign and units of shear_stress, Pa)");
+        c.reject_unknown();
+        sigma.push_back(normal_stress);
+        tau.push_back(curve.shear_strength);
+        s.measured_curves.push_back(curve);
+      }
     }
-    const MohrCoulombFit mc = fit_mohr_coulomb(cols[0], cols[1]);
+    std::set<double> distinct(sigma.begin(), sigma.end());
+    if (distinct.size() < 2)
+      m.fail(source_key, "needs shear strengths at two or more distinct normal stresses for the Mohr-Coulomb line, "
+                         "got " + std::to_string(distinct.size()));
+    for (std::size_t k = 0; k < sigma.size(); ++k) s.measured_points.push_back({sigma[k], tau[k]});
+    const MohrCoulombFit mc = fit_mohr_coulomb(sigma, tau);
     s.measured_fit_r2 = mc.r2;
     p.targets.push_back({"cohesion", "Pa", mc.cohesion, uc});
     p.targets.push_back({"tan_phi", "-", mc.slope, ut});

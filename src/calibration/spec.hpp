@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "calibration/calibrate.hpp"
+#include "calibration/measured_csv.hpp"
+#include "calibration/measured_shear_curve.hpp"
 #include "config/run_config.hpp"
 
 namespace colza::calibration {
@@ -25,8 +27,9 @@ struct Spec {
   Problem problem;                  // parameters, targets, design, sequential settings
   std::vector<double> loads;        // shear: normal stresses of each design run's series (Pa)
   // What the targets were derived from, for the report.
-  std::string measured_file;
-  std::vector<std::pair<double, double>> measured_points;  // shear: (sigma, tau); compression: empty
+  std::string measured_file;        // compression: the curve; shear: the results CSV (empty when curves are given)
+  std::vector<std::pair<double, double>> measured_points;  // shear: (sigma, tau) in Pa; compression: empty
+  std::vector<MeasuredShearCurve> measured_curves;         // shear: the curves the strengths came from, if any
   double measured_fit_r2 = 0.0;     // compression: R^2 of the measured curve's quadratic; shear: of the line
   double measured_c0 = 0.0;         // compression: c0 of the measured curve (N), not a target
   std::vector<std::string> warnings;
@@ -34,9 +37,5 @@ struct Spec {
 
 // Reads and checks everything (files exist, curves reach their range, enough design points).
 Spec read_spec(const std::string& path);
-
-// Reads a CSV with a header line; returns the named columns. Throws ConfigError(file_for_errors, key, ...).
-std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const std::vector<std::string>& columns,
-                                                  const std::string& spec_file, const std::string& key);
 
 }  // namespace colza::calibration

@@ -7,6 +7,7 @@
 
 #include "calibration/calibrate.hpp"
 #include "calibration/dem_model.hpp"
+#include "calibration/measured_report.hpp"
 #include "calibration/report.hpp"
 #include "calibration/spec.hpp"
 #include "config/config_error.hpp"
@@ -26,7 +27,7 @@ std::string spec_key(const Spec& spec, const std::string& key) {
     if (t.name == key) {
       if (spec.stage == Stage::kDensity) return "measured.bulk_density";
       if (spec.stage == Stage::kCompression) return spec.measured_file.empty() ? "measured." + key : "measured.curve";
-      return "measured.results";
+      return spec.measured_curves.empty() ? "measured.results" : "measured.curves";
     }
   if (key == "design") return "parameters[].design";
   return key;
@@ -100,16 +101,9 @@ int calibrate_command(const CalibrateOptions& opt) {
     for (double l : spec.loads) ctx.notes += " " + std::to_string(l) + " Pa";
     ctx.notes += " from one settled sample (bond strengths do not act before loading); C and tan(Phi) from the "
                  "Mohr-Coulomb line through the shear strengths.";
-    if (!spec.measured_points.empty()) {
-      ctx.notes += " Measured (normal stress, shear strength) in Pa:";
-      for (const auto& [s, t] : spec.measured_points) ctx.notes += " (" + std::to_string(s) + ", " + std::to_string(t) + ")";
-      ctx.notes += ".";
-    }
   }
-  if (spec.stage == Stage::kCompression && !spec.measured_file.empty())
-    ctx.notes += " Measured curve fitted over " + std::to_string(spec.base.oedometer.fit_force_min) + " .. " +
-                 std::to_string(spec.base.oedometer.fit_force_max) + " N: c0 = " + std::to_string(spec.measured_c0) +
-                 " N, R^2 = " + std::to_string(spec.measured_fit_r2) + ".";
+  ctx.measured = measured_data_summary(spec);
+  ctx.measured_section = measured_data_section(spec);
   for (const auto& run : result.runs) {
     const DemRunRecord* rec = dem.find(run.x);
     ctx.run_ids.push_back(rec ? rec->id : "");

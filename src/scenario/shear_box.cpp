@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/shear_strength.hpp"
 #include "io/packing_file.hpp"
 #include "scenario/generation.hpp"
 #include "scenario/plate_servo.hpp"
@@ -183,8 +184,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
   const double ts = world.time;
   std::uint64_t shear_steps = 0;
   double sigma_sum = 0.0, sigma_error_sum = 0.0;
-  double window_sum = 0.0;
-  std::size_t window_count = 0;
+  ShearStrengthMean strength({b.strength_window_start, b.strength_window_end});
   bool done = false;
   while (!done) {
     stepper.begin_step(world);
@@ -196,10 +196,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
     sigma_sum += sigma;
     sigma_error_sum += std::abs(sigma - normal_stress) / normal_stress;
     r.peak_shear_stress = std::max(r.peak_shear_stress, tau);
-    if (offset >= b.strength_window_start && offset <= b.strength_window_end) {
-      window_sum += tau;
-      ++window_count;
-    }
+    strength.add(offset, tau);
     done = offset >= b.shear_displacement;
     if (shear_steps % static_cast<std::uint64_t>(b.record_interval) == 0 || done) {
       const double plate_z = world.walls[ids.plate].origin.z();
@@ -220,7 +217,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
   progress.end_stage();
   shear_clock.count_steps(shear_steps, world.particles.size());
   r.stages.push_back(shear_clock.finish());
-  r.shear_strength = window_count ? window_sum / window_count : 0.0;
+  r.shear_strength = strength.value();
   r.mean_normal_stress = sigma_sum / shear_steps;
   r.mean_normal_stress_error = sigma_error_sum / shear_steps;
   r.particles_outside = count_outside(world, b, world.walls[ids.lower[0]].origin.x() - x0,

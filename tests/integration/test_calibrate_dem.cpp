@@ -162,3 +162,37 @@ TEST(CalibrateDensity, RecoversTheParticleDensityBothModes) {
     EXPECT_LE(std::abs(s["targets"][0]["error"].get<double>()), 0.02 * rho_b) << mode;
   }
 }
+
+TEST(CalibrateShearCurves, BadCurvesAreClearErrorsWithExitCode2) {
+  // Measured shear curves (measured.curves) that cannot give a shear strength stop before any
+  // DEM run, naming the spec file, the curve's key and the reason.
+  const fs::path dir = scratch_dir("calibrate-shear-curves");
+  fs::create_directories(dir);
+  std::string good = "shear_displacement,shear_stress\n";
+  for (int k = 0; k <= 6; ++k) good += std::to_string(0.0005 * k) + "," + std::to_string(20000 + 500 * k) + "\n";
+  write(dir / "low.csv", good);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"", "does not exist"},
+      {"shear_displacement,shear_stress\n0,0\n0.0015,2e4\n0.002,abc\n0.003,2e4\n", "line 4: column \"shear_stress\" is \"abc\""},
+      {"shear_displacement,shear_stress\n0,0\n0.0015,2e4\n0.0025,2e4\n", "ends at a shear displacement of 0.0025 m"},
+      {"shear_displacement,shear_stress\n0,0\n0.001,2e4\n0.003,2e4\n", "1 row(s) inside the strength window"},
+      {"shear_displacement,shear_stress\n0,0\n0.002,2e4\n0.0015,2e4\n0.003,2e4\n", "does not increase"}};
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    const std::string name = "high" + std::to_string(c) + ".csv";
+    if (!cases[c].first.empty()) write(dir / name, cases[c].first);
+    const fs::path spec = dir / ("spec" + std::to_string(c) + ".toml");
+    write(spec, "stage = \"shear\"\n[model]\nconfig = \"" + source_path("tests/data/small_shear.toml") +
+                    "\"\n[[parameters]]\nname = \"Cn\"\nkey = \"contact.contact_bond.normal_strength\"\n"
+                    "design = [0.5, 1.5, 2.5]\n[[parameters]]\nname = \"Cs\"\nkey = \"contact.contact_bond.shear_strength\"\n"
+                    "design = [3.0, 2.0, 3.0]\n[measured]\ncohesion_uncertainty = 500.0\ntan_phi_uncertainty = 0.02\n"
+                    "[[measured.curves]]\nnormal_stress = 25750.0\nfile = \"low.csv\"\n"
+                    "[[measured.curves]]\nnormal_stress = 78750.0\nfile = \"" + name + "\"\n");
+    const fs::path out = dir / ("out" + std::to_string(c));
+    const CliResult r = run_colza("calibrate shear --spec " + spec.string() + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+    EXPECT_NE(r.stderr_text.find(spec.string() + ": key 'measured.curves[1].file'"), std::string::npos) << r.stderr_text;
+    EXPECT_NE(r.stderr_text.find((dir / name).string()), std::string::npos) << r.stderr_text;
+    EXPECT_NE(r.stderr_text.find(cases[c].second), std::string::npos) << r.stderr_text;
+    EXPECT_FALSE(fs::exists(out / "summary.json"));
+  }
+}

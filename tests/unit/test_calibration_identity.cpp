@@ -8,6 +8,8 @@
 
 #include <atomic>
 #include <cmath>
+#include <functional>
+#include <string>
 
 #include "calibration/calibrate.hpp"
 
@@ -139,6 +141,70 @@ TEST(CalibrationIdentity, TargetOutsideTheDesignIsAnError) {
   bool said = false;
   for (const auto& w : seq.warnings) said = said || w.find("outside what the design can reach") != std::string::npos;
   EXPECT_TRUE(said);
+}
+
+namespace {
+
+// The paper's shear design (physics.md section 5): (Cn N, Cs N), with the paper's targets
+// C = 11.41 kPa, tan(28.10 deg) = 0.534 and the spec's assumed uncertainties.
+Problem shear_problem() {
+  Problem p;
+  p.parameters = {{"Cn", "contact.contact_bond.normal_strength", "N", 0.5, 2.5},
+                  {"Cs", "contact.contact_bond.shear_strength", "N", 2.0, 4.0}};
+  p.targets = {{"cohesion", "Pa", 11410.0, 1000.0}, {"tan_phi", "-", 0.534, 0.02}};
+  const double pts[5][2] = {{0.5, 3.0}, {1.5, 2.0}, {1.5, 3.0}, {1.5, 4.0}, {2.5, 3.0}};
+  for (auto& x : pts) p.design.push_back(Eigen::Vector2d(x[0], x[1]));
+  return p;
+}
+
+std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const CalibrationError& e) {
+    return std::string(e.key()) + " | " + e.what();
+  }
+  return "no CalibrationError";
+}
+
+}  // namespace
+
+TEST(CalibrationIdentity, UnreachableTargetIsNamedNotTheOneTheCompromiseSacrifices) {
+  // C = 3000 + 3000 Cn + 1500 Cs (Pa) reaches 11.41 kPa inside the box; tan(Phi) = 0.30 +
+  // 0.06 Cn + 0.005 Cs reaches at most 0.47 < 0.534 - 0.02. The joint weighted least squares
+  // goes to (Cn, Cs) = (2.5, 2.0), where C misses by 2.1 sigma and tan(Phi) by 3.7 sigma:
+  // naming the first target missed at the compromise named cohesion (the bug).
+  const ForwardModel model = [](const Eigen::VectorXd& x) {
+    return Eigen::Vector2d(3000.0 + 3000.0 * x[0] + 1500.0 * x[1], 0.30 + 0.06 * x[0] + 0.005 * x[1]).eval();
+  };
+  const Problem p = shear_problem();
+  const std::string paper = message_of([&] { calibrate_paper(p, model, {}); });
+  EXPECT_EQ(paper.rfind("tan_phi | ", 0), 0u) << paper;  // the error's key
+  EXPECT_NE(paper.find("the measured tan_phi = 0.534 +/- 0.02 - is outside what the design can reach"),
+            std::string::npos) << paper;
+  EXPECT_NE(paper.find("gets at best 0.47 "), std::string::npos) << paper;  // at (2.5, 4.0)
+  EXPECT_EQ(paper.find("measured cohesion"), std::string::npos) << paper;
+  // The sequential mode's closing warning judges reach the same way.
+  const CalibrationResult seq = calibrate_sequential(p, model, {});
+  EXPECT_FALSE(seq.within_uncertainty);
+  std::string reach;
+  for (const auto& w : seq.warnings)
+    if (w.find("outside what the design can reach") != std::string::npos) reach = w;
+  EXPECT_NE(reach.find("the measured tan_phi"), std::string::npos) << reach;
+  EXPECT_EQ(reach.find("measured cohesion"), std::string::npos) << reach;
+}
+
+TEST(CalibrationIdentity, TargetsReachableAloneButNotTogetherSaySo) {
+  // C = 2000 + 8000 Cn + 500 Cs needs Cn ~ 1; tan(Phi) = 0.8 - 0.2 Cn + 0.005 Cs needs
+  // Cn ~ 1.4: each is inside its surface's range over the box, the pair is not.
+  const ForwardModel model = [](const Eigen::VectorXd& x) {
+    return Eigen::Vector2d(2000.0 + 8000.0 * x[0] + 500.0 * x[1], 0.8 - 0.2 * x[0] + 0.005 * x[1]).eval();
+  };
+  const std::string m = message_of([&] { calibrate_paper(shear_problem(), model, {}); });
+  EXPECT_NE(m.find("the measured targets cannot all be reached at once: each alone is inside what the design can reach"),
+            std::string::npos) << m;
+  EXPECT_NE(m.find("misses cohesion = "), std::string::npos) << m;
+  EXPECT_NE(m.find("; tan_phi = "), std::string::npos) << m;
+  EXPECT_EQ(m.find("is outside what the design can reach"), std::string::npos) << m;
 }
 
 TEST(CalibrationIdentity, TooFewOrDegenerateDesignPointsAreErrors) {

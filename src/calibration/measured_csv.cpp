@@ -1,0 +1,89 @@
+#include "calibration/measured_csv.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "config/config_error.hpp"
+
+namespace colza::calibration {
+
+namespace {
+
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> cells;
+  std::istringstream s(line);
+  for (std::string c; std::getline(s, c, ',');) {
+    const auto b = c.find_first_not_of(" \t\r\"");
+    const auto e = c.find_last_not_of(" \t\r\"");
+    cells.push_back(b == std::string::npos ? "" : c.substr(b, e - b + 1));
+  }
+  return cells;
+}
+
+bool skipped(const std::string& line) {
+  const auto first = line.find_first_not_of(" \t\r");
+  return first == std::string::npos || line[first] == '#';
+}
+
+}  // namespace
+
+std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const std::vector<std::string>& columns,
+                                                  const std::string& spec_file, const std::string& key,
+                                                  std::vector<std::size_t>& line_numbers) {
+  std::ifstream in(csv);
+  if (!in) throw ConfigError(spec_file, key, "cannot open the measured data file " + csv);
+  std::string line;
+  std::size_t line_number = 0;
+  bool have_header = false;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (!skipped(line)) {
+      have_header = true;
+      break;
+    }
+  }
+  if (!have_header)
+    throw ConfigError(spec_file, key, csv + ": the file has no header line (it is empty or only comments)");
+  const std::vector<std::string> header = split_csv_line(line);
+  std::vector<std::size_t> index;
+  for (const auto& c : columns) {
+    const auto it = std::find(header.begin(), header.end(), c);
+    if (it == header.end())
+      throw ConfigError(spec_file, key, csv + ": no column \"" + c + "\" in the header line \"" + line + "\"");
+    index.push_back(static_cast<std::size_t>(it - header.begin()));
+  }
+  std::vector<std::vector<double>> out(columns.size());
+  line_numbers.clear();
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (skipped(line)) continue;
+    const auto cells = split_csv_line(line);
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+      const std::string where = csv + ": line " + std::to_string(line_number) + ": column \"" + columns[k] + "\"";
+      if (index[k] >= cells.size()) throw ConfigError(spec_file, key, where + " is missing (the row is short)");
+      const std::string& cell = cells[index[k]];
+      double v = 0.0;
+      try {
+        std::size_t used = 0;
+        v = std::stod(cell, &used);
+        if (used != cell.size() || !std::isfinite(v)) throw std::invalid_argument("");
+      } catch (const std::exception&) {
+        throw ConfigError(spec_file, key, where + " is \"" + cell + "\", not a finite number");
+      }
+      out[k].push_back(v);
+    }
+    line_numbers.push_back(line_number);
+  }
+  return out;
+}
+
+std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const std::vector<std::string>& columns,
+                                                  const std::string& spec_file, const std::string& key) {
+  std::vector<std::size_t> line_numbers;
+  return read_csv_columns(csv, columns, spec_file, key, line_numbers);
+}
+
+}  // namespace colza::calibration

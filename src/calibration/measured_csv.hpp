@@ -1,0 +1,21 @@
+// Measured data in plain CSV (data/measured/README.md): lines starting with '#' and empty
+// lines are skipped, the first other line is the header (column names, comma-separated),
+// every following line one row of numbers. Cells may be quoted and padded with blanks.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace colza::calibration {
+
+// Returns the named columns, in the order asked for. Every problem (file missing, column
+// missing, a cell that is not a finite number) is a ConfigError naming the spec file, the
+// spec key that named the CSV, and the CSV's path and line.
+std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const std::vector<std::string>& columns,
+                                                  const std::string& spec_file, const std::string& key);
+
+// Same, and the 1-based line number in the file of each row (for messages about a row).
+std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const std::vector<std::string>& columns,
+                                                  const std::string& spec_file, const std::string& key,
+                                                  std::vector<std::size_t>& line_numbers);
+
+}  // namespace colza::calibration

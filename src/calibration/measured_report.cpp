@@ -1,0 +1,100 @@
+#include "calibration/measured_report.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+namespace colza::calibration {
+
+namespace {
+
+std::string g(double v, int digits = 6) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*g", digits, v);
+  return b;
+}
+
+std::string shear_source(const Spec& s) { return s.measured_curves.empty() ? "results" : "curves"; }
+
+}  // namespace
+
+nlohmann::json measured_data_summary(const Spec& s) {
+  nlohmann::json m;
+  switch (s.stage) {
+    case Stage::kDensity:
+      m["source"] = "value";
+      break;
+    case Stage::kCompression:
+      m["source"] = s.measured_file.empty() ? "coefficients" : "curve";
+      if (!s.measured_file.empty()) {
+        m["file"] = s.measured_file;
+        m["fit_force_range"] = {s.base.oedometer.fit_force_min, s.base.oedometer.fit_force_max};
+        m["c0"] = s.measured_c0;
+        m["fit_r2"] = s.measured_fit_r2;
+      }
+      break;
+    case Stage::kShear: {
+      m["source"] = shear_source(s);
+      m["strengths"] = nlohmann::json::array();
+      if (s.measured_curves.empty()) {
+        m["file"] = s.measured_file;
+        for (const auto& [sigma, tau] : s.measured_points)
+          m["strengths"].push_back({{"normal_stress", sigma}, {"shear_strength", tau}});
+      } else {
+        const auto& w = s.measured_curves.front().window;
+        m["strength_window"] = {w.start, w.end};
+        m["strength_definition"] = "mean shear stress of the curve's rows with shear_displacement in the strength window";
+        for (const auto& c : s.measured_curves)
+          m["strengths"].push_back({{"normal_stress", c.normal_stress},
+                                    {"shear_strength", c.shear_strength},
+                                    {"file", c.file},
+                                    {"rows", c.rows},
+                                    {"rows_in_window", c.window_points},
+                                    {"max_displacement", c.max_displacement}});
+      }
+      m["line_r2"] = s.measured_fit_r2;
+      m["loads_simulated"] = s.loads;
+      break;
+    }
+  }
+  return m;
+}
+
+std::string measured_data_section(const Spec& s) {
+  std::ostringstream o;
+  o << "## Measured data\n\n";
+  switch (s.stage) {
+    case Stage::kDensity:
+      o << "Bulk density stated in the spec.\n";
+      break;
+    case Stage::kCompression:
+      if (s.measured_file.empty()) {
+        o << "c1 and c2 stated in the spec.\n";
+      } else {
+        o << "c1 and c2 from the measured curve `" << s.measured_file << "`, fitted F = c0 + c1 s + c2 s^2 over "
+          << g(s.base.oedometer.fit_force_min) << " .. " << g(s.base.oedometer.fit_force_max) << " N (as the "
+          << "simulated curves): c0 = " << g(s.measured_c0) << " N, R^2 = " << g(s.measured_fit_r2, 4) << ".\n";
+      }
+      break;
+    case Stage::kShear:
+      if (s.measured_curves.empty()) {
+        o << "Shear strengths read from `" << s.measured_file << "`:\n\n| normal stress (Pa) | shear strength (Pa) |\n"
+          << "|---|---|\n";
+        for (const auto& [sigma, tau] : s.measured_points) o << "| " << g(sigma) << " | " << g(tau) << " |\n";
+      } else {
+        const auto& w = s.measured_curves.front().window;
+        o << "Shear strengths derived from the measured curves as for the simulated ones: the mean shear stress of "
+          << "the rows with shear displacement in the strength window " << g(w.start) << " .. " << g(w.end)
+          << " m.\n\n| normal stress (Pa) | shear strength (Pa) | curve | rows in window / rows | curve ends at (m) |\n"
+          << "|---|---|---|---|---|\n";
+        for (const auto& c : s.measured_curves)
+          o << "| " << g(c.normal_stress) << " | " << g(c.shear_strength) << " | `" << c.file << "` | "
+            << c.window_points << " / " << c.rows << " | " << g(c.max_displacement) << " |\n";
+      }
+      o << "\nC and tan(Phi) are the least-squares line through these points (R^2 = " << g(s.measured_fit_r2, 4)
+        << ").\n";
+      break;
+  }
+  return o.str();
+}
+
+}  // namespace colza::calibration

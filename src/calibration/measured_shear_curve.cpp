@@ -1,0 +1,80 @@
+#include "calibration/measured_shear_curve.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "calibration/measured_csv.hpp"
+#include "config/config_error.hpp"
+
+namespace colza::calibration {
+
+namespace {
+
+std::string fmt(double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
+
+// Largest / smallest displacement step between consecutive rows inside the window; above
+// this the plain mean of the rows weights the densely sampled part more than the simulation
+// (evenly spaced time steps) does.
+constexpr double kUnevenStepRatio = 1.5;
+
+}  // namespace
+
+MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double normal_stress, StrengthWindow window,
+                                             const std::string& spec_file, const std::string& key,
+                                             std::vector<std::string>& warnings) {
+  if (!std::filesystem::exists(csv))
+    throw ConfigError(spec_file, key, "the measured shear curve " + csv + " does not exist");
+  std::vector<std::size_t> lines;
+  const auto cols = read_csv_columns(csv, {kShearDisplacementColumn, kShearStressColumn}, spec_file, key, lines);
+  const std::vector<double>& d = cols[0];
+  const std::vector<double>& tau = cols[1];
+  MeasuredShearCurve c;
+  c.file = csv;
+  c.normal_stress = normal_stress;
+  c.window = window;
+  c.rows = d.size();
+  if (d.empty()) throw ConfigError(spec_file, key, csv + ": the curve has no rows after its header line");
+  for (std::size_t k = 1; k < d.size(); ++k)
+    if (!(d[k] > d[k - 1]))
+      throw ConfigError(spec_file, key, csv + ": line " + std::to_string(lines[k]) + ": shear_displacement " +
+                                            fmt(d[k]) + " m does not increase on the previous row's " + fmt(d[k - 1]) +
+                                            " m (line " + std::to_string(lines[k - 1]) +
+                                            "): the displacement must increase strictly along the curve (sort the "
+                                            "rows; remove repeated rows and any unloading part)");
+  c.max_displacement = d.back();
+  if (c.max_displacement < window.end)
+    throw ConfigError(spec_file, key, csv + ": the curve ends at a shear displacement of " + fmt(c.max_displacement) +
+                                          " m, but the strength window needs it to reach " + fmt(window.end) +
+                                          " m (shear_box.strength_window_end; window " + fmt(window.start) + " .. " +
+                                          fmt(window.end) + " m): supply the whole curve, or end the window earlier "
+                                          "for the simulation and the measurement alike in the spec's [model] set");
+  const ShearStrengthMean mean = shear_strength_of_curve(d, tau, window);
+  c.window_points = mean.samples();
+  if (c.window_points < 2)
+    throw ConfigError(spec_file, key, csv + ": " + std::to_string(c.window_points) + " row(s) inside the strength "
+                                          "window " + fmt(window.start) + " .. " + fmt(window.end) +
+                                          " m; at least 2 are needed for a mean shear stress: supply a curve sampled "
+                                          "more densely");
+  c.shear_strength = mean.value();
+  double step_min = 0.0, step_max = 0.0;
+  bool first = true;
+  for (std::size_t k = 1; k < d.size(); ++k) {
+    if (!window.contains(d[k]) || !window.contains(d[k - 1])) continue;
+    const double step = d[k] - d[k - 1];
+    step_min = first ? step : std::min(step_min, step);
+    step_max = first ? step : std::max(step_max, step);
+    first = false;
+  }
+  if (!first && step_max > kUnevenStepRatio * step_min)
+    warnings.push_back(csv + ": the rows inside the strength window are unevenly spaced (displacement steps " +
+                       fmt(step_min) + " .. " + fmt(step_max) + " m); the shear strength is their plain mean, as for "
+                       "the simulation's evenly spaced samples: resample the curve at even displacement steps");
+  return c;
+}
+
+}  // namespace colza::calibration

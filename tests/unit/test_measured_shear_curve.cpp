@@ -1,0 +1,205 @@
+// Measured shear curves as calibration input (calibration/measured_shear_curve.hpp): the
+// strength is the mean shear stress of the rows inside the strength window, as for the
+// simulation (analysis/shear_strength.hpp); bad curves are ConfigErrors naming the spec
+// file, the key, the CSV and the reason. A shear spec built from curves reads its targets
+// from them. Every test writes small CSVs to its own temp folder.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+#include "analysis/mohr_coulomb.hpp"
+#include "analysis/shear_strength.hpp"
+#include "calibration/measured_shear_curve.hpp"
+#include "calibration/spec.hpp"
+#include "config/config_error.hpp"
+
+using namespace colza;
+using namespace colza::calibration;
+namespace fs = std::filesystem;
+
+namespace {
+
+const StrengthWindow kWindow{0.0015, 0.003};  // m, tests/data/small_shear.toml
+
+class MeasuredShearCurveTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("colza-unit-" + std::to_string(::getpid())) /
+           ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir_ / name) << text;
+    return (dir_ / name).string();
+  }
+  // Rows every 0.5 mm from 0 to `end_mm`, tau = 1000 + 100 * (d in mm) Pa.
+  std::string even_curve(const std::string& name, double end_mm, double tau0 = 1000.0) const {
+    std::string t = "shear_displacement,shear_stress\n";
+    for (int k = 0; 0.5 * k <= end_mm + 1e-9; ++k)
+      t += std::to_string(0.0005 * k) + "," + std::to_string(tau0 + 100.0 * 0.5 * k) + "\n";
+    return write(name, t);
+  }
+  // The ConfigError's full message, or "" when read_measured_shear_curve succeeds.
+  std::string error_of(const std::string& csv) const {
+    std::vector<std::string> warnings;
+    try {
+      read_measured_shear_curve(csv, 25e3, kWindow, "spec.toml", "measured.curves[0].file", warnings);
+    } catch (const ConfigError& e) {
+      EXPECT_EQ(e.file(), "spec.toml");
+      EXPECT_EQ(e.key(), "measured.curves[0].file");
+      return e.what();
+    }
+    return "";
+  }
+  fs::path dir_;
+};
+
+}  // namespace
+
+TEST(ShearStrengthMean, MeanOfTheSamplesInsideTheClosedWindow) {
+  ShearStrengthMean m({0.002, 0.003});
+  m.add(0.0019, 1e9);  // outside
+  m.add(0.002, 10.0);  // both ends count
+  m.add(0.0025, 20.0);
+  m.add(0.003, 60.0);
+  m.add(0.0031, -1e9);  // outside
+  EXPECT_EQ(m.samples(), 3u);
+  EXPECT_DOUBLE_EQ(m.value(), 30.0);
+  EXPECT_EQ(ShearStrengthMean({0.0, 1.0}).value(), 0.0);  // no sample
+}
+
+TEST_F(MeasuredShearCurveTest, StrengthIsTheMeanStressOverTheWindow) {
+  std::vector<std::string> warnings;
+  const auto c = read_measured_shear_curve(even_curve("c.csv", 3.0), 25e3, kWindow, "spec.toml", "k", warnings);
+  // Rows at 1.5, 2.0, 2.5, 3.0 mm: tau = 1150, 1200, 1250, 1300 Pa.
+  EXPECT_EQ(c.window_points, 4u);
+  EXPECT_EQ(c.rows, 7u);
+  EXPECT_NEAR(c.shear_strength, 1225.0, 1e-9);
+  EXPECT_DOUBLE_EQ(c.max_displacement, 0.003);
+  EXPECT_EQ(c.normal_stress, 25e3);
+  EXPECT_TRUE(warnings.empty());
+}
+
+TEST_F(MeasuredShearCurveTest, ColzasOwnCurveFileIsAValidCurve) {
+  // Comment lines, extra columns in any order (load-<sigma>Pa/curve.csv has nine).
+  const std::string csv = write("curve.csv",
+                                "# a comment\n"
+                                "time,shear_displacement,shear_force,shear_stress,normal_stress\n"
+                                "0,0,0,0,25000\n"
+                                "0.1,0.0015,40,1000,25000\n"
+                                "0.2,0.00225,44,1100,25000\n"
+                                "0.3,0.003,48,1200,25000\n");
+  std::vector<std::string> warnings;
+  const auto c = read_measured_shear_curve(csv, 25e3, kWindow, "spec.toml", "k", warnings);
+  EXPECT_NEAR(c.shear_strength, 1100.0, 1e-9);
+  EXPECT_EQ(c.window_points, 3u);
+}
+
+TEST_F(MeasuredShearCurveTest, MissingFile) {
+  const std::string m = error_of((dir_ / "nowhere.csv").string());
+  EXPECT_NE(m.find("nowhere.csv does not exist"), std::string::npos) << m;
+}
+
+TEST_F(MeasuredShearCurveTest, MissingColumn) {
+  const std::string m = error_of(write("c.csv", "displacement,stress\n0,1\n"));
+  EXPECT_NE(m.find("no column \"shear_displacement\""), std::string::npos) << m;
+}
+
+TEST_F(MeasuredShearCurveTest, NonNumericCellNamesLineAndColumn) {
+  const std::string m = error_of(write("c.csv", "# comment\nshear_displacement,shear_stress\n0,0\n0.001,12x\n"));
+  EXPECT_NE(m.find("c.csv: line 4: column \"shear_stress\" is \"12x\", not a finite number"), std::string::npos) << m;
+}
+
+TEST_F(MeasuredShearCurveTest, CurveEndingBeforeTheWindowSaysHowFarItGoesAndWhatIsNeeded) {
+  const std::string m = error_of(even_curve("c.csv", 2.5));
+  EXPECT_NE(m.find("ends at a shear displacement of 0.0025 m"), std::string::npos) << m;
+  EXPECT_NE(m.find("needs it to reach 0.003 m"), std::string::npos) << m;
+}
+
+TEST_F(MeasuredShearCurveTest, FewerThanTwoRowsInTheWindow) {
+  const std::string m = error_of(write("c.csv", "shear_displacement,shear_stress\n0,0\n0.001,900\n0.002,1000\n0.0035,1100\n"));
+  EXPECT_NE(m.find("1 row(s) inside the strength window 0.0015 .. 0.003 m; at least 2 are needed"), std::string::npos)
+      << m;
+}
+
+TEST_F(MeasuredShearCurveTest, DisplacementMustIncrease) {
+  const std::string m =
+      error_of(write("c.csv", "shear_displacement,shear_stress\n0,0\n0.002,900\n0.002,950\n0.003,1000\n"));
+  EXPECT_NE(m.find("line 4: shear_displacement 0.002 m does not increase on the previous row's 0.002 m (line 3)"),
+            std::string::npos) << m;
+}
+
+TEST_F(MeasuredShearCurveTest, EmptyCurve) {
+  EXPECT_NE(error_of(write("c.csv", "shear_displacement,shear_stress\n")).find("no rows"), std::string::npos);
+  EXPECT_NE(error_of(write("d.csv", "")).find("no header line"), std::string::npos);
+}
+
+TEST_F(MeasuredShearCurveTest, UnevenSamplingInTheWindowIsAWarning) {
+  const std::string csv =
+      write("c.csv", "shear_displacement,shear_stress\n0.0015,1000\n0.0016,1000\n0.0017,1000\n0.003,1000\n");
+  std::vector<std::string> warnings;
+  read_measured_shear_curve(csv, 25e3, kWindow, "spec.toml", "k", warnings);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("unevenly spaced"), std::string::npos) << warnings[0];
+}
+
+// --- a shear spec whose targets come from curves ------------------------------------------
+
+namespace {
+
+std::string shear_spec(const std::string& measured) {
+  return "stage = \"shear\"\n[model]\nconfig = \"" COLZA_SOURCE_DIR "/tests/data/small_shear.toml\"\n"
+         "[[parameters]]\nname = \"Cn\"\nkey = \"contact.contact_bond.normal_strength\"\ndesign = [0.5, 1.5, 2.5]\n"
+         "[[parameters]]\nname = \"Cs\"\nkey = \"contact.contact_bond.shear_strength\"\ndesign = [3.0, 2.0, 3.0]\n"
+         "[measured]\ncohesion_uncertainty = 500.0\ntan_phi_uncertainty = 0.02\n" + measured;
+}
+
+}  // namespace
+
+TEST_F(MeasuredShearCurveTest, SpecTakesTheTargetsFromTheCurves) {
+  even_curve("low.csv", 3.0, 1000.0);   // strength 1225 Pa
+  even_curve("high.csv", 3.0, 2000.0);  // strength 2225 Pa
+  const std::string spec = write("spec.toml", shear_spec("[[measured.curves]]\nnormal_stress = 20000.0\nfile = \"low.csv\"\n"
+                                                         "[[measured.curves]]\nnormal_stress = 60000.0\nfile = \"high.csv\"\n"));
+  const Spec s = read_spec(spec);
+  ASSERT_EQ(s.measured_curves.size(), 2u);
+  EXPECT_NEAR(s.measured_curves[1].shear_strength, 2225.0, 1e-9);
+  const MohrCoulombFit line = fit_mohr_coulomb({20000.0, 60000.0}, {1225.0, 2225.0});
+  EXPECT_EQ(s.problem.targets[0].name, "cohesion");
+  EXPECT_DOUBLE_EQ(s.problem.targets[0].value, line.cohesion);
+  EXPECT_DOUBLE_EQ(s.problem.targets[1].value, line.slope);
+  EXPECT_EQ(s.loads, (std::vector<double>{20000.0, 60000.0}));
+  EXPECT_TRUE(s.measured_file.empty());
+}
+
+TEST_F(MeasuredShearCurveTest, SpecErrorsNameTheCurveKey) {
+  even_curve("low.csv", 3.0);
+  even_curve("short.csv", 2.0);
+  auto error = [&](const std::string& measured) -> std::string {
+    try {
+      read_spec(write("spec.toml", shear_spec(measured)));
+    } catch (const ConfigError& e) {
+      return e.key() + " | " + e.reason();
+    }
+    return "no error";
+  };
+  const std::string both = error("results = \"r.csv\"\n[[measured.curves]]\nnormal_stress = 2e4\nfile = \"low.csv\"\n");
+  EXPECT_EQ(both.rfind("measured.curves | give either", 0), 0u) << both;
+  const std::string neither = error("");
+  EXPECT_EQ(neither.rfind("measured.results | missing", 0), 0u) << neither;
+  const std::string short_curve = error("[[measured.curves]]\nnormal_stress = 2e4\nfile = \"low.csv\"\n"
+                                        "[[measured.curves]]\nnormal_stress = 6e4\nfile = \"short.csv\"\n");
+  EXPECT_EQ(short_curve.rfind("measured.curves[1].file | ", 0), 0u) << short_curve;
+  EXPECT_NE(short_curve.find("ends at a shear displacement of 0.002 m"), std::string::npos) << short_curve;
+  const std::string one_load = error("[[measured.curves]]\nnormal_stress = 2e4\nfile = \"low.csv\"\n");
+  EXPECT_EQ(one_load.rfind("measured.curves | needs shear strengths at two or more", 0), 0u) << one_load;
+  const std::string no_stress = error("[[measured.curves]]\nfile = \"low.csv\"\n");
+  EXPECT_EQ(no_stress.rfind("measured.curves[0].normal_stress | missing", 0), 0u) << no_stress;
+  const std::string misspelt = error("[[measured.curves]]\nnormal_stress = 2e4\nfiel = \"low.csv\"\n");
+  EXPECT_EQ(misspelt.rfind("measured.curves[0].file | missing", 0), 0u) << misspelt;
+}
