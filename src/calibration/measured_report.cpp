@@ -3,15 +3,13 @@
 #include <cstdio>
 #include <sstream>
 
+#include "io/format_number.hpp"
+
 namespace colza::calibration {
 
 namespace {
 
-std::string g(double v, int digits = 6) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
-}
+std::string g(double v, int digits = 6) { return format_significant(v, digits); }
 
 std::string shear_source(const Spec& s) { return s.measured_curves.empty() ? "results" : "curves"; }
 

@@ -4,15 +4,13 @@
 #include <cstdio>
 #include <sstream>
 
+#include "io/format_number.hpp"
+
 namespace colza::calibration {
 
 namespace {
 
-std::string g(double v, int digits = 5) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
-}
+std::string g(double v, int digits = 5) { return format_significant(v, digits); }
 
 nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
