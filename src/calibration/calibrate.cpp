@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "core/concurrent.hpp"
+#include "io/format_number.hpp"
 
 namespace colza::calibration {
 
@@ -24,11 +25,7 @@ Eigen::VectorXd Problem::upper() const {
 
 namespace {
 
-std::string fmt(double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
-}
+std::string fmt(double v) { return format_significant(v, 6); }
 
 std::string point_text(const Problem& p, const Eigen::VectorXd& x) {
   std::string s = "(";

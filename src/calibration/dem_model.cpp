@@ -11,6 +11,7 @@
 #include "io/output_dir.hpp"
 #include "io/packing_file.hpp"
 #include "io/summary.hpp"
+#include "io/format_number.hpp"
 #include "io/table.hpp"
 #include "scenario/oedometer.hpp"
 
@@ -21,11 +22,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string num17(double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
-}
+std::string num17(double v) { return format_significant(v, 17); }  // round-trips a double
 
 Scenario scenario_of(const Spec& s) { return s.stage == Stage::kShear ? Scenario::kShear : Scenario::kOedometer; }
 

@@ -6,16 +6,13 @@
 
 #include "calibration/measured_csv.hpp"
 #include "config/config_error.hpp"
+#include "io/format_number.hpp"
 
 namespace colza::calibration {
 
 namespace {
 
-std::string fmt(double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
-}
+std::string fmt(double v) { return format_significant(v, 6); }
 
 // Largest / smallest displacement step between consecutive rows inside the window; above
 // this the plain mean of the rows weights the densely sampled part more than the simulation

@@ -13,6 +13,7 @@
 #include "analysis/mohr_coulomb.hpp"
 #include "analysis/polyfit.hpp"
 #include "config/config_error.hpp"
+#include "io/format_number.hpp"
 
 namespace colza::calibration {
 
@@ -29,11 +30,7 @@ const char* to_string(Stage s) {
 
 namespace {
 
-std::string fmt(double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
-}
+std::string fmt(double v) { return format_significant(v, 6); }
 
 // Small typed access to one table of the spec, with unknown-key rejection.
 struct Node {

@@ -12,6 +12,7 @@ using Index = std::uint32_t;    // particle / wall index
 inline constexpr double kPi = 3.14159265358979323846;
 
 // sign(x) with sign(0) = 0, as used by both local-damping forms (physics.md section 3).
-inline double sign_or_zero(double x) { return (x > 0.0) - (x < 0.0); }
+// Written with selects on doubles (not bool arithmetic) so that loops calling it vectorise.
+inline double sign_or_zero(double x) { return (x > 0.0 ? 1.0 : 0.0) - (x < 0.0 ? 1.0 : 0.0); }
 
 }  // namespace colza

@@ -124,12 +124,12 @@ template <class Normal, class Tangential, class Bond, class Out, class Sink>
 [[gnu::always_inline]] inline void particle_pair_range(const Normal& normal_law, const Tangential& tangential_law,
                                                        const Bond& bond_law, bool bond_new_contacts,
                                                        const ParticleArrays& p, const PairTable& pairs, double dt,
-                                                       const ParticlePairList& pp, std::size_t begin,
+                                                       ParticlePairList& pp, std::size_t begin,
                                                        std::size_t end, Out& out, Sink& sink) {
   const double half_dt = 0.5 * dt;
   const Index* first = pp.first.data();
   const Index* second = pp.second.data();
-  ContactHistory* history = const_cast<ContactHistory*>(pp.history.data());
+  ContactHistory* history = pp.history.data();
   if constexpr (kHasBatchedKernel<Normal, Tangential>) {
     if (pairs.particle_material_count() == 1) {
       particle_pairs_batched(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt, first,

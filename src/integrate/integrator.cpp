@@ -16,19 +16,14 @@ namespace {
 // Acceleration of one degree of freedom under local damping, resolved at compile time
 // for the damping form (no branch on the form in the particle loop).
 // `load` is the unbalanced generalised force (N or N m), `mobility` is 1/m or 1/I.
-// sign(x) is written as (x > 0) - (x < 0) with doubles (sign_or_zero's value) so that the
-// particle loop vectorises.
 template <DampingForm kForm>
 inline double damped_acceleration(double load, double velocity, double mobility, double alpha, double dt) {
   if constexpr (kForm == DampingForm::kPfc) {
-    const double sign_v = (velocity > 0.0 ? 1.0 : 0.0) - (velocity < 0.0 ? 1.0 : 0.0);
-    const double damping_force = -alpha * std::abs(load) * sign_v;
+    const double damping_force = -alpha * std::abs(load) * sign_or_zero(velocity);
     return (load + damping_force) * mobility;
   } else {
     const double a = load * mobility;
-    const double x = a * (velocity + 0.5 * dt * a);
-    const double sign_x = (x > 0.0 ? 1.0 : 0.0) - (x < 0.0 ? 1.0 : 0.0);
-    return a * (1.0 - alpha * sign_x);
+    return a * (1.0 - alpha * sign_or_zero(a * (velocity + 0.5 * dt * a)));
   }
 }
 

@@ -44,11 +44,6 @@ namespace {
 constexpr double kTrueCn = 1.8, kTrueCs = 3.3;  // N
 const std::vector<std::string> kWideBox = {"shear_box.length=0.1", "shear_box.width=0.1", "sample.count=1560"};
 
-void write(const fs::path& f, const std::string& text) {
-  std::ofstream o(f);
-  o << text;
-}
-
 class CalibrateShearIdentity : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -66,7 +61,7 @@ class CalibrateShearIdentity : public ::testing::Test {
     std::string model_set = "set = [";
     for (const auto& s : kWideBox) model_set += "\"" + s + "\", ";
     model_set += "\"shear_box.packing_file=\\\"" + (dir_ / "truth" / "packing.txt").string() + "\\\"\"]\n";
-    write(dir_ / "spec.toml",
+    write_file(dir_ / "spec.toml",
           "stage = \"shear\"\n[model]\nconfig = \"" + config + "\"\n" + model_set +
               "[[parameters]]\nname = \"Cn\"\nkey = \"contact.contact_bond.normal_strength\"\nunit = \"N\"\n"
               "design = [0.5, 1.5, 1.5, 1.5, 2.5]\n"  // the paper's five points (physics.md section 5)

@@ -22,6 +22,8 @@ inline std::string read_file(const std::filesystem::path& p) {
   return s.str();
 }
 
+inline void write_file(const std::filesystem::path& p, const std::string& text) { std::ofstream(p) << text; }
+
 // Runs `colza <args>` with stdout discarded and stderr captured.
 inline CliResult run_colza(const std::string& args) {
   const auto err = std::filesystem::temp_directory_path() / ("colza-stderr-" + std::to_string(::getpid()));

@@ -24,11 +24,6 @@ namespace {
 const std::string kOed = source_path("tests/data/small_oedometer.toml");
 const std::string kLoad = "--set oedometer.stop_force=1500 --set oedometer.fit_force_max=1400 ";
 
-void write(const fs::path& f, const std::string& text) {
-  std::ofstream o(f);
-  o << text;
-}
-
 // The packing, the synthetic measurement at the truth, and the spec.
 class CalibrateCompression : public ::testing::Test {
  protected:
@@ -55,8 +50,8 @@ class CalibrateCompression : public ::testing::Test {
       std::getline(r, f, ',');
       csv += s + "," + f + "\n";
     }
-    write(dir_ / "measured.csv", csv);
-    write(dir_ / "spec.toml", "stage = \"compression\"\n[model]\nconfig = \"" + kOed +
+    write_file(dir_ / "measured.csv", csv);
+    write_file(dir_ / "spec.toml", "stage = \"compression\"\n[model]\nconfig = \"" + kOed +
                                   "\"\nset = [\"oedometer.stop_force=1500.0\", \"oedometer.fit_force_max=1400.0\", "
                                   "\"oedometer.packing_file=\\\"" + packing + "\\\"\"]\n"
                                   "[[parameters]]\nname = \"kn_p\"\nkey = \"particle.normal_stiffness\"\nunit = \"N/m\"\n"
@@ -115,16 +110,16 @@ TEST_F(CalibrateCompression, SequentialModeRecoversTheParameters) {
 
 TEST_F(CalibrateCompression, BadMeasuredDataAreClearErrors) {
   // A curve that never reaches the fit range.
-  write(dir_ / "short.csv", "displacement,force\n0,0\n0.001,100\n0.002,300\n");
+  write_file(dir_ / "short.csv", "displacement,force\n0,0\n0.001,100\n0.002,300\n");
   std::string spec = read_file(dir_ / "spec.toml");
-  write(dir_ / "short.toml", std::string(spec).replace(spec.find("measured.csv"), 12, "short.csv"));
+  write_file(dir_ / "short.toml", std::string(spec).replace(spec.find("measured.csv"), 12, "short.csv"));
   CliResult r = run_colza("calibrate compression --spec " + (dir_ / "short.toml").string() + " --out " +
                           (dir_ / "e1").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.stderr_text.find("measured.curve"), std::string::npos) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("never reaches"), std::string::npos) << r.stderr_text;
   // A missing file.
-  write(dir_ / "missing.toml", std::string(spec).replace(spec.find("measured.csv"), 12, "nowhere.csv"));
+  write_file(dir_ / "missing.toml", std::string(spec).replace(spec.find("measured.csv"), 12, "nowhere.csv"));
   r = run_colza("calibrate compression --spec " + (dir_ / "missing.toml").string() + " --out " + (dir_ / "e2").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.stderr_text.find("does not exist"), std::string::npos) << r.stderr_text;
@@ -132,7 +127,7 @@ TEST_F(CalibrateCompression, BadMeasuredDataAreClearErrors) {
   std::string few = spec;
   few.replace(few.find("[350e3, 450e3, 450e3, 450e3, 550e3]"), 35, "[350e3, 550e3]");
   few.replace(few.find("[0.3, 0.2, 0.3, 0.4, 0.3]"), 25, "[0.2, 0.4]");
-  write(dir_ / "few.toml", few);
+  write_file(dir_ / "few.toml", few);
   r = run_colza("calibrate compression --spec " + (dir_ / "few.toml").string() + " --out " + (dir_ / "e3").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.stderr_text.find("too few design points"), std::string::npos) << r.stderr_text;
@@ -147,7 +142,7 @@ TEST(CalibrateDensity, RecoversTheParticleDensityBothModes) {
   ASSERT_EQ(run_colza("run oedometer --quiet --config " + kOed + " " + set + "--set particle.density=1260 --out " +
                       (dir / "truth").string()).exit_code, 0);
   const double rho_b = read_json(dir / "truth" / "summary.json")["bulk_density"].get<double>();
-  write(dir / "spec.toml", "stage = \"density\"\n[model]\nconfig = \"" + kOed +
+  write_file(dir / "spec.toml", "stage = \"density\"\n[model]\nconfig = \"" + kOed +
                                "\"\nset = [\"oedometer.stop_force=100.0\", \"oedometer.fit_force_max=90.0\"]\n"
                                "[[parameters]]\nname = \"rho_p\"\nkey = \"particle.density\"\nunit = \"kg/m^3\"\n"
                                "design = [1200.0, 1300.0]\n[sequential]\nmax_runs = 4\n"
@@ -170,7 +165,7 @@ TEST(CalibrateShearCurves, BadCurvesAreClearErrorsWithExitCode2) {
   fs::create_directories(dir);
   std::string good = "shear_displacement,shear_stress\n";
   for (int k = 0; k <= 6; ++k) good += std::to_string(0.0005 * k) + "," + std::to_string(20000 + 500 * k) + "\n";
-  write(dir / "low.csv", good);
+  write_file(dir / "low.csv", good);
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"", "does not exist"},
       {"shear_displacement,shear_stress\n0,0\n0.0015,2e4\n0.002,abc\n0.003,2e4\n", "line 4: column \"shear_stress\" is \"abc\""},
@@ -179,9 +174,9 @@ TEST(CalibrateShearCurves, BadCurvesAreClearErrorsWithExitCode2) {
       {"shear_displacement,shear_stress\n0,0\n0.002,2e4\n0.0015,2e4\n0.003,2e4\n", "does not increase"}};
   for (std::size_t c = 0; c < cases.size(); ++c) {
     const std::string name = "high" + std::to_string(c) + ".csv";
-    if (!cases[c].first.empty()) write(dir / name, cases[c].first);
+    if (!cases[c].first.empty()) write_file(dir / name, cases[c].first);
     const fs::path spec = dir / ("spec" + std::to_string(c) + ".toml");
-    write(spec, "stage = \"shear\"\n[model]\nconfig = \"" + source_path("tests/data/small_shear.toml") +
+    write_file(spec, "stage = \"shear\"\n[model]\nconfig = \"" + source_path("tests/data/small_shear.toml") +
                     "\"\n[[parameters]]\nname = \"Cn\"\nkey = \"contact.contact_bond.normal_strength\"\n"
                     "design = [0.5, 1.5, 2.5]\n[[parameters]]\nname = \"Cs\"\nkey = \"contact.contact_bond.shear_strength\"\n"
                     "design = [3.0, 2.0, 3.0]\n[measured]\ncohesion_uncertainty = 500.0\ntan_phi_uncertainty = 0.02\n"
