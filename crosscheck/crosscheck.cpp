@@ -406,6 +406,13 @@ class Runner {
       }
     }
     box->insert_or_assign("packing_file", fs::absolute(prep / "packing.txt").string());
+    // The tolerances table may shorten the shearing (a YADE load of the full box to 30 mm
+    // takes hours): these keys replace the scene's and are printed with the table.
+    for (const char* key : {"shear_displacement", "strength_window_start", "strength_window_end"})
+      if (const auto v = t->at_path(key).value<double>()) {
+        box->insert_or_assign(key, *v);
+        std::printf("crosscheck: %s: shear_box.%s = %g (from [%s])\n", label.c_str(), key, *v, base.c_str());
+      }
     auto write_config = [&](const toml::table& d, const std::string& name) {
       const fs::path f = work / name;
       std::ofstream o(f);
