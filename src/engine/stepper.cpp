@@ -10,6 +10,8 @@
 #include "contact/contact_law.hpp"
 #include "engine/pair_batch.hpp"
 #include "engine/pair_force.hpp"
+#include "engine/pair_sinks.hpp"
+#include "engine/wall_pair_force.hpp"
 
 namespace colza {
 
@@ -40,10 +42,17 @@ using detail::V3;
 using detail::vec;
 using detail::kHasBatchedKernel;
 using detail::particle_pairs_batched;
+using detail::wall_pair_force;
+using detail::ForceLoopTotals;
+using detail::LogSink;
+using detail::SerialSink;
 
 // Below this many candidate pairs per thread the force loop runs serially (threading
 // overhead would dominate; also keeps tiny unit-test systems on the reference path).
 constexpr std::size_t kMinPairsPerThread = 1024;
+// Pairs per work item of the threaded force loop: small enough to balance the threads
+// (contact states differ along the pair list), large enough to amortise the hand-out.
+constexpr std::size_t kPairsPerChunk = 256;
 
 int worker_threads() {
 #ifdef _OPENMP
@@ -52,42 +61,6 @@ int worker_threads() {
   return 1;
 #endif
 }
-
-struct ForceLoopTotals {
-  double slip = 0.0, broken = 0.0, released = 0.0, wall_power = 0.0;
-  std::uint64_t broken_tension = 0, broken_shear = 0;
-};
-
-inline void count_event(ContactEvent e, std::uint64_t& tension, std::uint64_t& shear) {
-  if (e == ContactEvent::kBondBrokeTension) ++tension;
-  if (e == ContactEvent::kBondBrokeShear) ++shear;
-}
-
-// Where the rare per-pair results go. The serial sink adds them to the totals at once, in
-// pair order (the reference order). The logging sink keeps the non-zero ones of one
-// contiguous chunk of pairs in pair order; chunk logs replayed in chunk order give the same
-// sums as the serial sink (adding +0.0 to a sum that started at +0.0 changes nothing).
-struct SerialSink {
-  ForceLoopTotals& t;
-  void slip(double s) { t.slip += s; }
-  void broken(double e) { t.broken += e; }
-  void released(double e) { t.released += e; }
-  void event(ContactEvent e) { count_event(e, t.broken_tension, t.broken_shear); }
-};
-struct LogSink {
-  std::vector<double> slips, brokens, releases;
-  std::uint64_t broken_tension = 0, broken_shear = 0;
-  void slip(double s) {
-    if (s != 0.0) slips.push_back(s);
-  }
-  void broken(double e) {
-    if (e != 0.0) brokens.push_back(e);
-  }
-  void released(double e) {
-    if (e != 0.0) releases.push_back(e);
-  }
-  void event(ContactEvent e) { count_event(e, broken_tension, broken_shear); }
-};
 
 // Where a pair's force goes. Serial: straight onto the bodies (body 2 gets +f and +t_j,
 // body 1 gets -f and -t_i). Threaded: into per-pair buffers, gathered per particle later.
@@ -162,17 +135,24 @@ template <class Normal, class Tangential, class Bond>
                       out, sink);
 }
 
-// Threaded particle-pair loop. Phase 1: contiguous chunks of pairs (one per thread) store
-// each pair's force and torques. Phase 2: each particle sums its pairs' contributions in
+// Threaded particle-pair loop. Phase 1: fixed chunks of kPairsPerChunk contiguous pairs,
+// handed to the threads dynamically (balances uneven chunks), store each pair's force and
+// torques; which thread computes a chunk does not matter, each pair has its own slot and
+// each chunk its own log. Phase 2: each particle sums its pairs' contributions in
 // pair order (its gather list), starting from zero. That is exactly the sequence of
 // additions of the serial loop for that particle (x - f == x + (-f) in IEEE arithmetic,
 // and a pair without force contributes +-0, which leaves a sum started at +0 unchanged),
 // so forces and torques are bit-for-bit those of the serial loop at any thread count.
+//
+// Sphere-wall pairs run in the same parallel phase (chunks of wall pairs, after the
+// particle-pair chunks, into per-wall-pair buffers); each particle adds its wall pairs in wall-pair order after its
+// particle pairs, as the serial loop does, and the walls' force sums, contact counts and
+// power are then summed serially in wall-pair order. Same bits as the serial loops.
 template <class Normal, class Tangential, class Bond>
-[[gnu::flatten]] void particle_pairs_threaded(const Normal& normal_law, const Tangential& tangential_law,
-                                               const Bond& bond_law, bool bond_new_contacts, World& world,
-                                               const PairTable& pairs, ForceLoopTotals& totals, int threads,
-                                               Stepper::GatherScratch& g) {
+[[gnu::flatten]] void all_pairs_threaded(const Normal& normal_law, const Tangential& tangential_law,
+                                          const Bond& bond_law, bool bond_new_contacts, World& world,
+                                          const PairTable& pairs, ForceLoopTotals& totals, int threads,
+                                          Stepper::GatherScratch& g) {
   ParticleArrays& p = world.particles;
   auto& pp = world.contacts.particle_pairs;
   const std::size_t n_pairs = pp.size(), n = p.size();
@@ -183,7 +163,20 @@ template <class Normal, class Tangential, class Bond>
   const Index* entries = g.entries.data();
   Vec3* force = p.force.data();
   Vec3* torque = p.torque.data();
-  std::vector<LogSink> sinks(static_cast<std::size_t>(threads));
+  auto& pw = world.contacts.wall_pairs;
+  const std::size_t n_wall_pairs = pw.size();
+  Vec3* wall_force = g.wall_force.data();
+  Vec3* wall_torque = g.wall_torque.data();
+  std::uint8_t* wall_carries = g.wall_carries.data();
+  const Index* wall_start = g.wall_start.data();
+  const Index* wall_entries = g.wall_entries.data();
+  const double dt = world.dt, half_dt = 0.5 * dt;
+  const std::size_t particle_chunks = (n_pairs + kPairsPerChunk - 1) / kPairsPerChunk;
+  const std::size_t wall_chunks = (n_wall_pairs + kPairsPerChunk - 1) / kPairsPerChunk;
+  const std::size_t n_chunks = particle_chunks + wall_chunks;
+  std::vector<LogSink>& sinks = g.chunk_logs;  // chunk order = pair order, then wall-pair order
+  sinks.resize(std::max(sinks.size(), n_chunks));
+  for (std::size_t k = 0; k < n_chunks; ++k) sinks[k].clear();
 #pragma omp parallel num_threads(threads)
   {
 #ifdef _OPENMP
@@ -193,9 +186,19 @@ template <class Normal, class Tangential, class Bond>
     const std::size_t t = 0, nt = 1;
 #endif
     StoreByPair out{pair_force, torque_1, torque_2};
-    particle_pair_range(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, world.dt, pp,
-                        n_pairs * t / nt, n_pairs * (t + 1) / nt, out, sinks[t]);
-#pragma omp barrier
+#pragma omp for schedule(dynamic, 1)
+    for (std::size_t k = 0; k < n_chunks; ++k) {
+      if (k < particle_chunks) {
+        particle_pair_range(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, world.dt, pp,
+                            k * kPairsPerChunk, std::min(n_pairs, (k + 1) * kPairsPerChunk), out, sinks[k]);
+      } else {
+        const std::size_t begin = (k - particle_chunks) * kPairsPerChunk;
+        for (std::size_t c = begin, end = std::min(n_wall_pairs, begin + kPairsPerChunk); c < end; ++c)
+          wall_carries[c] = wall_pair_force(normal_law, tangential_law, p, world.walls[pw.wall[c]], pairs, dt,
+                                            half_dt, pw.particle[c], pw.history[c], wall_force[c], wall_torque[c],
+                                            sinks[k]);
+      }
+    }  // implicit barrier: every pair is done before the gather
     for (std::size_t i = n * t / nt, end = n * (t + 1) / nt; i < end; ++i) {
       Vec3 fi = Vec3::Zero(), ti = Vec3::Zero();
       for (Index k = start[i]; k < start[i + 1]; ++k) {
@@ -208,16 +211,34 @@ template <class Normal, class Tangential, class Bond>
           ti += torque_2[c];
         }
       }
+      for (Index k = wall_start[i]; k < wall_start[i + 1]; ++k) {
+        const Index c = wall_entries[k];
+        if (!wall_carries[c]) continue;
+        fi += wall_force[c];
+        ti += wall_torque[c];
+      }
       force[i] = fi;
       torque[i] = ti;
     }
   }
-  for (const LogSink& s : sinks) {  // chunk order = pair order
+  for (std::size_t k = 0; k < n_chunks; ++k) {  // chunk order = pair order, then wall-pair order
+    const LogSink& s = sinks[k];
     for (double v : s.slips) totals.slip += v;
     for (double v : s.brokens) totals.broken += v;
     for (double v : s.releases) totals.released += v;
     totals.broken_tension += s.broken_tension;
     totals.broken_shear += s.broken_shear;
+  }
+  for (auto& wall : world.walls) {
+    wall.force.setZero();
+    wall.contact_count = 0;
+  }
+  for (std::size_t c = 0; c < n_wall_pairs; ++c) {
+    if (!wall_carries[c]) continue;
+    Wall& wall = world.walls[pw.wall[c]];
+    wall.force -= wall_force[c];
+    ++wall.contact_count;
+    totals.wall_power += wall_force[c].dot(wall.velocity);  // power of the wall on the particle (W)
   }
 }
 
@@ -232,30 +253,16 @@ template <class Normal, class Tangential>
     wall.force.setZero();
     wall.contact_count = 0;
   }
+  SerialSink sink{totals};
   const std::size_t n_wall_pairs = pw.size();
   for (std::size_t c = 0; c < n_wall_pairs; ++c) {
     Wall& wall = world.walls[pw.wall[c]];
     const Index i = pw.particle[c];
-    ContactHistory& h = pw.history[c];
-    const WallContactGeometry g = wall_sphere_geometry(wall, p.position[i], p.radius[i]);
-    if (!g.in_range || (!h.touching && g.overlap < 0.0)) {
-      if (h.touching) h.reset();
+    Vec3 f, torque;
+    if (!wall_pair_force(normal_law, tangential_law, p, wall, pairs, dt, half_dt, i, pw.history[c], f, torque, sink))
       continue;
-    }
-    ContactKinematics k;
-    k.normal = g.normal;
-    k.overlap = g.overlap;
-    const Vec3 arm = g.point - p.position[i];
-    const Vec3 rel_vel = (p.velocity[i] + p.angular_velocity[i].cross(arm)) - wall.velocity;
-    k.shear_increment = (rel_vel - rel_vel.dot(k.normal) * k.normal) * dt;
-    k.twist_angle = half_dt * p.angular_velocity[i].dot(h.normal);  // previous normal
-    const PairParameters& q = pairs.particle_wall(p.material[i], wall.material);
-    const ContactOutcome out = evaluate_contact(normal_law, tangential_law, NoBond{}, q, k, h, false);
-    if (!out.carries_force) continue;
-    totals.slip += out.slip_dissipation;
-    const Vec3& f = out.force_on_2;
     p.force[i] += f;
-    p.torque[i] += arm.cross(f);
+    p.torque[i] += torque;
     wall.force -= f;
     ++wall.contact_count;
     totals.wall_power += f.dot(wall.velocity);  // power of the wall on the particle (W)
@@ -283,6 +290,17 @@ void Stepper::update_gather_lists(const World& world) {
     g.entries[fill[pp.first[c]]++] = static_cast<Index>(2 * c + 1);
     g.entries[fill[pp.second[c]]++] = static_cast<Index>(2 * c);
   }
+  const auto& pw = world.contacts.wall_pairs;
+  const std::size_t n_wall_pairs = pw.size();
+  g.wall_start.assign(n + 1, 0);
+  for (std::size_t c = 0; c < n_wall_pairs; ++c) ++g.wall_start[pw.particle[c] + 1];
+  for (std::size_t i = 0; i < n; ++i) g.wall_start[i + 1] += g.wall_start[i];
+  g.wall_entries.resize(n_wall_pairs);
+  fill.assign(g.wall_start.begin(), g.wall_start.end() - 1);
+  for (std::size_t c = 0; c < n_wall_pairs; ++c) g.wall_entries[fill[pw.particle[c]]++] = static_cast<Index>(c);
+  g.wall_force.resize(n_wall_pairs);
+  g.wall_torque.resize(n_wall_pairs);
+  g.wall_carries.resize(n_wall_pairs);
   g.pair_force.resize(n_pairs);
   g.torque_1.resize(n_pairs);
   g.torque_2.resize(n_pairs);
@@ -300,11 +318,12 @@ void Stepper::compute_forces(World& world) {
   ForceLoopTotals totals;
   std::visit(
       [&](const auto& normal, const auto& tangential, const auto& bond) {
-        if (threaded)
-          particle_pairs_threaded(normal, tangential, bond, bond_new, world, pairs_, totals, threads, gather_);
-        else
+        if (threaded) {
+          all_pairs_threaded(normal, tangential, bond, bond_new, world, pairs_, totals, threads, gather_);
+        } else {
           particle_pairs_serial(normal, tangential, bond, bond_new, world, pairs_, totals);
-        wall_pairs_serial(normal, tangential, world, pairs_, totals);
+          wall_pairs_serial(normal, tangential, world, pairs_, totals);
+        }
       },
       physics_.model.normal, physics_.model.tangential, physics_.model.bond);
   ledger_.slip_dissipated += totals.slip;

@@ -54,6 +54,7 @@ World make_world(const Setup& setup) {
     w.walls.push_back(Wall::plane("low" + std::to_string(axis), lo * n, n));
     w.walls.push_back(Wall::plane("high" + std::to_string(axis), hi * n, -n));
   }
+  w.walls.back().velocity = Vec3(0.002, 0.001, -0.02);  // the lid squeezes and drags (wall power, slip on walls)
   return w;
 }
 
@@ -81,6 +82,7 @@ struct PathRun {
   std::uint64_t steps = 0;
   std::size_t max_pairs = 0;
   std::uint64_t broken_tension = 0, broken_shear = 0;
+  EnergyLedger ledger;
 };
 
 PathRun run_path(const Setup& setup, int threads) {
@@ -99,6 +101,7 @@ PathRun run_path(const Setup& setup, int threads) {
   }
   r.broken_tension = stepper.events().bonds_broken_tension;
   r.broken_shear = stepper.events().bonds_broken_shear;
+  r.ledger = stepper.ledger();
 #ifdef _OPENMP
   omp_set_num_threads(saved);
 #endif
@@ -126,6 +129,26 @@ void expect_same_state(const World& a, const World& b) {
     ASSERT_EQ(ha[c].touching, hb[c].touching) << "pair " << c;
     ASSERT_EQ(ha[c].bonded, hb[c].bonded) << "pair " << c;
   }
+  const auto& wa = a.contacts.wall_pairs.history;
+  const auto& wb = b.contacts.wall_pairs.history;
+  ASSERT_EQ(wa.size(), wb.size());
+  for (std::size_t c = 0; c < wa.size(); ++c) {
+    ASSERT_EQ(std::memcmp(wa[c].shear_force.data(), wb[c].shear_force.data(), sizeof(Vec3)), 0) << "wall pair " << c;
+    ASSERT_EQ(wa[c].touching, wb[c].touching) << "wall pair " << c;
+  }
+  ASSERT_EQ(a.walls.size(), b.walls.size());
+  for (std::size_t w = 0; w < a.walls.size(); ++w) {
+    EXPECT_EQ(std::memcmp(a.walls[w].force.data(), b.walls[w].force.data(), sizeof(Vec3)), 0) << "wall " << w;
+    EXPECT_EQ(a.walls[w].contact_count, b.walls[w].contact_count) << "wall " << w;
+  }
+}
+
+// The ledger terms summed in pair order (the damping work is summed per thread range).
+void expect_same_pair_energies(const EnergyLedger& a, const EnergyLedger& b) {
+  EXPECT_EQ(std::memcmp(&a.slip_dissipated, &b.slip_dissipated, sizeof(double)), 0);
+  EXPECT_EQ(std::memcmp(&a.wall_work, &b.wall_work, sizeof(double)), 0);
+  EXPECT_EQ(std::memcmp(&a.bond_break_lost, &b.bond_break_lost, sizeof(double)), 0);
+  EXPECT_EQ(std::memcmp(&a.shear_break_released, &b.shear_break_released, sizeof(double)), 0);
 }
 
 }  // namespace
@@ -135,6 +158,7 @@ TEST(ForcePaths, BatchedKernelGivesTheScalarReferenceBits) {
   const PathRun reference = run_path({2, false}, 1);
   ASSERT_GT(batched.world.contacts.touching_particle_contacts(), 1000u);  // a real contact network
   expect_same_state(batched.world, reference.world);
+  expect_same_pair_energies(batched.ledger, reference.ledger);
 }
 
 TEST(ForcePaths, BatchedKernelGivesTheScalarReferenceBitsWithBondsBreaking) {
@@ -144,6 +168,7 @@ TEST(ForcePaths, BatchedKernelGivesTheScalarReferenceBitsWithBondsBreaking) {
   EXPECT_EQ(batched.broken_tension, reference.broken_tension);
   EXPECT_EQ(batched.broken_shear, reference.broken_shear);
   expect_same_state(batched.world, reference.world);
+  expect_same_pair_energies(batched.ledger, reference.ledger);
 }
 
 #ifdef _OPENMP
@@ -151,6 +176,10 @@ TEST(ForcePaths, TwoThreadsGiveTheOneThreadBits) {
   const PathRun one = run_path({1, true}, 1);
   const PathRun two = run_path({1, true}, 2);
   ASSERT_GE(one.max_pairs, 2048u);  // the threaded path's threshold (stepper.cpp) is reached
+  ASSERT_GT(one.world.contacts.touching_wall_contacts(), 100u);  // wall pairs take the threaded path too
+  EXPECT_GT(one.ledger.slip_dissipated, 0.0);
+  EXPECT_NE(one.ledger.wall_work, 0.0);
   expect_same_state(one.world, two.world);
+  expect_same_pair_energies(one.ledger, two.ledger);
 }
 #endif

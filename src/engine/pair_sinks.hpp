@@ -1,0 +1,52 @@
+// Where the rare per-pair results of the force loop go (internal to the stepper): slip
+// dissipation, energy lost or released when contacts and bonds break, and bond-break counts.
+#pragma once
+#include <cstdint>
+#include <vector>
+#include "contact/contact_law.hpp"
+
+namespace colza::detail {
+
+struct ForceLoopTotals {
+  double slip = 0.0, broken = 0.0, released = 0.0, wall_power = 0.0;
+  std::uint64_t broken_tension = 0, broken_shear = 0;
+};
+
+inline void count_event(ContactEvent e, std::uint64_t& tension, std::uint64_t& shear) {
+  if (e == ContactEvent::kBondBrokeTension) ++tension;
+  if (e == ContactEvent::kBondBrokeShear) ++shear;
+}
+
+// Where the rare per-pair results go. The serial sink adds them to the totals at once, in
+// pair order (the reference order). The logging sink keeps the non-zero ones of one
+// contiguous chunk of pairs in pair order; chunk logs replayed in chunk order give the same
+// sums as the serial sink (adding +0.0 to a sum that started at +0.0 changes nothing).
+struct SerialSink {
+  ForceLoopTotals& t;
+  void slip(double s) { t.slip += s; }
+  void broken(double e) { t.broken += e; }
+  void released(double e) { t.released += e; }
+  void event(ContactEvent e) { count_event(e, t.broken_tension, t.broken_shear); }
+};
+struct LogSink {
+  std::vector<double> slips, brokens, releases;
+  std::uint64_t broken_tension = 0, broken_shear = 0;
+  void slip(double s) {
+    if (s != 0.0) slips.push_back(s);
+  }
+  void broken(double e) {
+    if (e != 0.0) brokens.push_back(e);
+  }
+  void released(double e) {
+    if (e != 0.0) releases.push_back(e);
+  }
+  void event(ContactEvent e) { count_event(e, broken_tension, broken_shear); }
+  void clear() {
+    slips.clear();
+    brokens.clear();
+    releases.clear();
+    broken_tension = broken_shear = 0;
+  }
+};
+
+}  // namespace colza::detail

@@ -1,0 +1,45 @@
+// The contact law of one sphere-wall pair (internal to the stepper).
+//
+// Same law as a particle pair (contact/contact_law.hpp) with the wall as body 1: contact
+// point, normal and overlap from walls/wall.hpp; relative velocity at the contact point
+// v_rel = v_i + omega_i x arm - v_wall (m/s); shear increment (v_rel - (v_rel . n) n) dt;
+// twist angle dt/2 omega_i . n_old (rad). No bond between a sphere and a wall.
+#pragma once
+#include "contact/contact_law.hpp"
+#include "core/materials.hpp"
+#include "core/particles.hpp"
+#include "walls/wall.hpp"
+
+namespace colza::detail {
+
+// Evaluates wall pair (wall, particle i, history h). Returns true when the pair carries a
+// force this step; then `force` is the force on the particle (N) and `torque` its moment
+// about the particle's centre (N m). Slip dissipation (J) goes to sink.slip. A pair that
+// left the wall's range, or separated, resets its history.
+template <class Normal, class Tangential, class Sink>
+[[gnu::always_inline]] inline bool wall_pair_force(const Normal& normal_law, const Tangential& tangential_law,
+                                                   const ParticleArrays& p, const Wall& wall, const PairTable& pairs,
+                                                   double dt, double half_dt, Index i, ContactHistory& h,
+                                                   Vec3& force, Vec3& torque, Sink& sink) {
+  const WallContactGeometry g = wall_sphere_geometry(wall, p.position[i], p.radius[i]);
+  if (!g.in_range || (!h.touching && g.overlap < 0.0)) {
+    if (h.touching) h.reset();
+    return false;
+  }
+  ContactKinematics k;
+  k.normal = g.normal;
+  k.overlap = g.overlap;
+  const Vec3 arm = g.point - p.position[i];
+  const Vec3 rel_vel = (p.velocity[i] + p.angular_velocity[i].cross(arm)) - wall.velocity;
+  k.shear_increment = (rel_vel - rel_vel.dot(k.normal) * k.normal) * dt;
+  k.twist_angle = half_dt * p.angular_velocity[i].dot(h.normal);  // previous normal
+  const PairParameters& q = pairs.particle_wall(p.material[i], wall.material);
+  const ContactOutcome out = evaluate_contact(normal_law, tangential_law, NoBond{}, q, k, h, false);
+  if (!out.carries_force) return false;
+  sink.slip(out.slip_dissipation);
+  force = out.force_on_2;
+  torque = arm.cross(force);
+  return true;
+}
+
+}  // namespace colza::detail
