@@ -11,6 +11,7 @@
 #include "engine/pair_batch.hpp"
 #include "engine/pair_force.hpp"
 #include "engine/pair_sinks.hpp"
+#include "engine/force_partition.hpp"
 #include "engine/wall_pair_force.hpp"
 
 namespace colza {
@@ -50,9 +51,6 @@ using detail::SerialSink;
 // Below this many candidate pairs per thread the force loop runs serially (threading
 // overhead would dominate; also keeps tiny unit-test systems on the reference path).
 constexpr std::size_t kMinPairsPerThread = 1024;
-// Pairs per work item of the threaded force loop: small enough to balance the threads
-// (contact states differ along the pair list), large enough to amortise the hand-out.
-constexpr std::size_t kPairsPerChunk = 256;
 
 int worker_threads() {
 #ifdef _OPENMP
@@ -75,19 +73,44 @@ struct ScatterToBodies {
   }
   void none(std::size_t) {}
 };
-struct StoreByPair {
-  Vec3* pair_force;
-  Vec3* torque_1;
-  Vec3* torque_2;
-  void carries(std::size_t c, Index, Index, const V3& f, const V3& t_i, const V3& t_j) {
-    pair_force[c] = vec(f);
-    torque_1[c] = Vec3(-t_i.x, -t_i.y, -t_i.z);
-    torque_2[c] = vec(t_j);
+// Threaded: an inner body gets its share at once, as in the serial scatter; a pair with a
+// boundary body also goes to its slot, from which the boundary body is summed after the
+// barrier (engine/force_partition.hpp).
+struct ScatterOrStore {
+  Vec3* force;
+  Vec3* torque;
+  const Index* slot;
+  const std::uint8_t* boundary;
+  Vec3* slot_force;
+  Vec3* slot_torque_1;
+  Vec3* slot_torque_2;
+  void carries(std::size_t c, Index i, Index j, const V3& f, const V3& t_i, const V3& t_j) {
+    const Index s = slot[c];
+    if (s == ForcePartition::kNoSlot) {
+      add_to(force[j], f);
+      sub_from(force[i], f);
+      add_to(torque[j], t_j);
+      sub_from(torque[i], t_i);
+      return;
+    }
+    slot_force[s] = vec(f);
+    slot_torque_1[s] = Vec3(-t_i.x, -t_i.y, -t_i.z);
+    slot_torque_2[s] = vec(t_j);
+    if (!boundary[j]) {
+      add_to(force[j], f);
+      add_to(torque[j], t_j);
+    }
+    if (!boundary[i]) {
+      sub_from(force[i], f);
+      sub_from(torque[i], t_i);
+    }
   }
   void none(std::size_t c) {
-    pair_force[c].setZero();
-    torque_1[c].setZero();
-    torque_2[c].setZero();
+    const Index s = slot[c];
+    if (s == ForcePartition::kNoSlot) return;
+    slot_force[s].setZero();
+    slot_torque_1[s].setZero();
+    slot_torque_2[s].setZero();
   }
 };
 
@@ -135,110 +158,105 @@ template <class Normal, class Tangential, class Bond>
                       out, sink);
 }
 
-// Threaded particle-pair loop. Phase 1: fixed chunks of kPairsPerChunk contiguous pairs,
-// handed to the threads dynamically (balances uneven chunks), store each pair's force and
-// torques; which thread computes a chunk does not matter, each pair has its own slot and
-// each chunk its own log. Phase 2: each particle sums its pairs' contributions in
-// pair order (its gather list), starting from zero. That is exactly the sequence of
-// additions of the serial loop for that particle (x - f == x + (-f) in IEEE arithmetic,
-// and a pair without force contributes +-0, which leaves a sum started at +0 unchanged),
-// so forces and torques are bit-for-bit those of the serial loop at any thread count.
-//
-// Sphere-wall pairs run in the same parallel phase (chunks of wall pairs, after the
-// particle-pair chunks, into per-wall-pair buffers); each particle adds its wall pairs in wall-pair order after its
-// particle pairs, as the serial loop does, and the walls' force sums, contact counts and
-// power are then summed serially in wall-pair order. Same bits as the serial loops.
+// Threaded force loop (particle and wall pairs), partitioned as engine/force_partition.hpp
+// explains. Phase 1: each thread computes the pairs of its particle range, scattering to
+// inner bodies at once and storing pairs with a boundary body in slots. Barrier. Phase 2:
+// each thread sums its boundary particles from the slots in pair order, starting from zero
+// (the serial loop's sequence of additions: x - f == x + (-f) in IEEE arithmetic, and a
+// pair without force adds +-0 to a sum started at +0, which changes nothing), then computes
+// the wall pairs of its particles wall by wall (each particle: increasing wall = wall-pair
+// order) and adds them. The walls' force sums, contact counts and power are summed
+// serially in wall-pair order, and the logs replayed in pair order, then wall-pair order.
+// Forces, torques, walls and ledger terms are those of the serial loops, bit for bit, at
+// any thread count.
 template <class Normal, class Tangential, class Bond>
 [[gnu::flatten]] void all_pairs_threaded(const Normal& normal_law, const Tangential& tangential_law,
                                           const Bond& bond_law, bool bond_new_contacts, World& world,
-                                          const PairTable& pairs, ForceLoopTotals& totals, int threads,
-                                          Stepper::GatherScratch& g) {
+                                          const PairTable& pairs, ForceLoopTotals& totals, ForcePartition& part) {
   ParticleArrays& p = world.particles;
   auto& pp = world.contacts.particle_pairs;
-  const std::size_t n_pairs = pp.size(), n = p.size();
-  Vec3* pair_force = g.pair_force.data();
-  Vec3* torque_1 = g.torque_1.data();
-  Vec3* torque_2 = g.torque_2.data();
-  const Index* start = g.start.data();
-  const Index* entries = g.entries.data();
+  auto& pw = world.contacts.wall_pairs;
+  const std::size_t n_walls = world.walls.size(), T = static_cast<std::size_t>(part.threads);
   Vec3* force = p.force.data();
   Vec3* torque = p.torque.data();
-  auto& pw = world.contacts.wall_pairs;
-  const std::size_t n_wall_pairs = pw.size();
-  Vec3* wall_force = g.wall_force.data();
-  Vec3* wall_torque = g.wall_torque.data();
-  std::uint8_t* wall_carries = g.wall_carries.data();
-  const Index* wall_start = g.wall_start.data();
-  const Index* wall_entries = g.wall_entries.data();
   const double dt = world.dt, half_dt = 0.5 * dt;
-  const std::size_t particle_chunks = (n_pairs + kPairsPerChunk - 1) / kPairsPerChunk;
-  const std::size_t wall_chunks = (n_wall_pairs + kPairsPerChunk - 1) / kPairsPerChunk;
-  const std::size_t n_chunks = particle_chunks + wall_chunks;
-  std::vector<LogSink>& sinks = g.chunk_logs;  // chunk order = pair order, then wall-pair order
-  sinks.resize(std::max(sinks.size(), n_chunks));
-  for (std::size_t k = 0; k < n_chunks; ++k) sinks[k].clear();
-#pragma omp parallel num_threads(threads)
+  for (auto& log : part.pair_logs) log.clear();
+  for (auto& log : part.wall_logs) log.clear();
+#pragma omp parallel num_threads(part.threads)
   {
 #ifdef _OPENMP
-    const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
-    const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
+    const std::size_t first_range = static_cast<std::size_t>(omp_get_thread_num());
+    const std::size_t stride = static_cast<std::size_t>(omp_get_num_threads());
 #else
-    const std::size_t t = 0, nt = 1;
+    const std::size_t first_range = 0, stride = 1;
 #endif
-    StoreByPair out{pair_force, torque_1, torque_2};
-#pragma omp for schedule(dynamic, 1)
-    for (std::size_t k = 0; k < n_chunks; ++k) {
-      if (k < particle_chunks) {
-        particle_pair_range(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, world.dt, pp,
-                            k * kPairsPerChunk, std::min(n_pairs, (k + 1) * kPairsPerChunk), out, sinks[k]);
-      } else {
-        const std::size_t begin = (k - particle_chunks) * kPairsPerChunk;
-        for (std::size_t c = begin, end = std::min(n_wall_pairs, begin + kPairsPerChunk); c < end; ++c)
-          wall_carries[c] = wall_pair_force(normal_law, tangential_law, p, world.walls[pw.wall[c]], pairs, dt,
-                                            half_dt, pw.particle[c], pw.history[c], wall_force[c], wall_torque[c],
-                                            sinks[k]);
+    ScatterOrStore out{force,           torque, part.slot.data(), part.boundary.data(), part.slot_force.data(),
+                       part.slot_torque_1.data(), part.slot_torque_2.data()};
+    for (std::size_t r = first_range; r < T; r += stride) {
+      std::fill(force + part.particle_begin[r], force + part.particle_begin[r + 1], Vec3::Zero());
+      std::fill(torque + part.particle_begin[r], torque + part.particle_begin[r + 1], Vec3::Zero());
+      particle_pair_range(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, pp,
+                          part.pair_begin[r], part.pair_begin[r + 1], out, part.pair_logs[r]);
+    }
+#pragma omp barrier
+    const Index* start = part.gather_start.data();
+    const Index* entries = part.gather_entries.data();
+    const Vec3* slot_force = part.slot_force.data();
+    const Vec3* slot_torque_1 = part.slot_torque_1.data();
+    const Vec3* slot_torque_2 = part.slot_torque_2.data();
+    for (std::size_t r = first_range; r < T; r += stride) {
+      for (std::size_t b = part.boundary_begin[r]; b < part.boundary_begin[r + 1]; ++b) {
+        Vec3 fi = Vec3::Zero(), ti = Vec3::Zero();
+        for (Index k = start[b]; k < start[b + 1]; ++k) {
+          const Index e = entries[k], s = e >> 1;
+          if (e & 1u) {  // body 1
+            fi -= slot_force[s];
+            ti += slot_torque_1[s];
+          } else {  // body 2
+            fi += slot_force[s];
+            ti += slot_torque_2[s];
+          }
+        }
+        force[part.boundary_particles[b]] = fi;
+        torque[part.boundary_particles[b]] = ti;
       }
-    }  // implicit barrier: every pair is done before the gather
-    for (std::size_t i = n * t / nt, end = n * (t + 1) / nt; i < end; ++i) {
-      Vec3 fi = Vec3::Zero(), ti = Vec3::Zero();
-      for (Index k = start[i]; k < start[i + 1]; ++k) {
-        const Index e = entries[k], c = e >> 1;
-        if (e & 1u) {  // body 1
-          fi -= pair_force[c];
-          ti += torque_1[c];
-        } else {  // body 2
-          fi += pair_force[c];
-          ti += torque_2[c];
+      for (std::size_t w = 0; w < n_walls; ++w) {
+        const Wall& wall = world.walls[w];
+        for (std::size_t c = part.wall_pair_begin[w * (T + 1) + r], end = part.wall_pair_begin[w * (T + 1) + r + 1];
+             c < end; ++c) {
+          const Index i = pw.particle[c];
+          Vec3 f, moment;
+          const bool carries = wall_pair_force(normal_law, tangential_law, p, wall, pairs, dt, half_dt, i,
+                                               pw.history[c], f, moment, part.wall_logs[w * T + r]);
+          part.wall_carries[c] = carries;
+          if (!carries) continue;
+          part.wall_force[c] = f;
+          force[i] += f;
+          torque[i] += moment;
         }
       }
-      for (Index k = wall_start[i]; k < wall_start[i + 1]; ++k) {
-        const Index c = wall_entries[k];
-        if (!wall_carries[c]) continue;
-        fi += wall_force[c];
-        ti += wall_torque[c];
-      }
-      force[i] = fi;
-      torque[i] = ti;
     }
   }
-  for (std::size_t k = 0; k < n_chunks; ++k) {  // chunk order = pair order, then wall-pair order
-    const LogSink& s = sinks[k];
+  for (const LogSink& s : part.pair_logs) {  // range order = pair order
     for (double v : s.slips) totals.slip += v;
     for (double v : s.brokens) totals.broken += v;
     for (double v : s.releases) totals.released += v;
     totals.broken_tension += s.broken_tension;
     totals.broken_shear += s.broken_shear;
   }
+  for (const LogSink& s : part.wall_logs)  // [w * T + t]: wall-pair order
+    for (double v : s.slips) totals.slip += v;
   for (auto& wall : world.walls) {
     wall.force.setZero();
     wall.contact_count = 0;
   }
-  for (std::size_t c = 0; c < n_wall_pairs; ++c) {
-    if (!wall_carries[c]) continue;
+  for (std::size_t c = 0; c < pw.size(); ++c) {
+    if (!part.wall_carries[c]) continue;
     Wall& wall = world.walls[pw.wall[c]];
-    wall.force -= wall_force[c];
+    const Vec3& f = part.wall_force[c];
+    wall.force -= f;
     ++wall.contact_count;
-    totals.wall_power += wall_force[c].dot(wall.velocity);  // power of the wall on the particle (W)
+    totals.wall_power += f.dot(wall.velocity);  // power of the wall on the particle (W)
   }
 }
 
@@ -271,55 +289,17 @@ template <class Normal, class Tangential>
 
 }  // namespace
 
-void Stepper::update_gather_lists(const World& world) {
-  const auto& pp = world.contacts.particle_pairs;
-  const std::size_t n_pairs = pp.size(), n = world.particles.size();
-  GatherScratch& g = gather_;
-  if (g.revision == world.contacts.revision() && g.first_data == pp.first.data() && g.n_pairs == n_pairs &&
-      g.n_particles == n)
-    return;
-  g.start.assign(n + 1, 0);
-  for (std::size_t c = 0; c < n_pairs; ++c) {
-    ++g.start[pp.first[c] + 1];
-    ++g.start[pp.second[c] + 1];
-  }
-  for (std::size_t i = 0; i < n; ++i) g.start[i + 1] += g.start[i];
-  g.entries.resize(2 * n_pairs);
-  std::vector<Index> fill(g.start.begin(), g.start.end() - 1);
-  for (std::size_t c = 0; c < n_pairs; ++c) {  // increasing c: each list is in pair order
-    g.entries[fill[pp.first[c]]++] = static_cast<Index>(2 * c + 1);
-    g.entries[fill[pp.second[c]]++] = static_cast<Index>(2 * c);
-  }
-  const auto& pw = world.contacts.wall_pairs;
-  const std::size_t n_wall_pairs = pw.size();
-  g.wall_start.assign(n + 1, 0);
-  for (std::size_t c = 0; c < n_wall_pairs; ++c) ++g.wall_start[pw.particle[c] + 1];
-  for (std::size_t i = 0; i < n; ++i) g.wall_start[i + 1] += g.wall_start[i];
-  g.wall_entries.resize(n_wall_pairs);
-  fill.assign(g.wall_start.begin(), g.wall_start.end() - 1);
-  for (std::size_t c = 0; c < n_wall_pairs; ++c) g.wall_entries[fill[pw.particle[c]]++] = static_cast<Index>(c);
-  g.wall_force.resize(n_wall_pairs);
-  g.wall_torque.resize(n_wall_pairs);
-  g.wall_carries.resize(n_wall_pairs);
-  g.pair_force.resize(n_pairs);
-  g.torque_1.resize(n_pairs);
-  g.torque_2.resize(n_pairs);
-  g.revision = world.contacts.revision();
-  g.first_data = pp.first.data();
-  g.n_pairs = n_pairs;
-  g.n_particles = n;
-}
-
 void Stepper::compute_forces(World& world) {
   const bool bond_new = physics_.model.bond_install == BondInstallMoment::kOnNewContacts;
   const int threads = worker_threads();
   const bool threaded = threads > 1 && world.contacts.particle_pairs.size() >= kMinPairsPerThread * 2;
-  if (threaded) update_gather_lists(world);
+  if (threaded && !partition_.matches(world.contacts, world.particles.size(), world.walls.size(), threads))
+    partition_.build(world.contacts, world.particles.size(), world.walls.size(), threads);
   ForceLoopTotals totals;
   std::visit(
       [&](const auto& normal, const auto& tangential, const auto& bond) {
         if (threaded) {
-          all_pairs_threaded(normal, tangential, bond, bond_new, world, pairs_, totals, threads, gather_);
+          all_pairs_threaded(normal, tangential, bond, bond_new, world, pairs_, totals, partition_);
         } else {
           particle_pairs_serial(normal, tangential, bond, bond_new, world, pairs_, totals);
           wall_pairs_serial(normal, tangential, world, pairs_, totals);
@@ -344,7 +324,7 @@ void Stepper::begin_step(World& world) {
 }
 
 void Stepper::finish_step(World& world) {
-  last_integration_ = integrate_step(world.particles, physics_.integrator, world.dt, worker_threads(), gather_.unbalanced);
+  last_integration_ = integrate_step(world.particles, physics_.integrator, world.dt, worker_threads(), unbalanced_scratch_);
   ledger_.damping_dissipated += last_integration_.damping_work;
   for (auto& wall : world.walls) wall.origin += world.dt * wall.velocity;
   world.time += world.dt;

@@ -4,7 +4,7 @@
 #pragma once
 #include <vector>
 #include "engine/energy.hpp"
-#include "engine/pair_sinks.hpp"
+#include "engine/force_partition.hpp"
 #include "engine/world.hpp"
 #include "neighbour/neighbour_search.hpp"
 
@@ -57,8 +57,6 @@ class Stepper {
 
  private:
   void compute_forces(World& world);
-  // Per-particle gather lists of the particle pairs (threaded force path, see stepper.cpp).
-  void update_gather_lists(const World& world);
   PhysicsSettings physics_;
   PairTable pairs_;
   NeighbourSearch neighbours_;
@@ -66,26 +64,8 @@ class Stepper {
   EnergyLedger ledger_;
   ContactEvents events_;
 
- public:
-  // Scratch of the threaded force path (kept to avoid reallocation). For particle p,
-  // entries[start[p] .. start[p + 1]) lists its particle pairs in pair order as
-  // 2 c + role (role 0: p is body 2, role 1: p is body 1), and
-  // wall_entries[wall_start[p] .. wall_start[p + 1]) its wall pairs in wall-pair order.
-  struct GatherScratch {
-    std::uint64_t revision = ~std::uint64_t{0};
-    const Index* first_data = nullptr;
-    std::size_t n_pairs = 0, n_particles = 0;
-    std::vector<Index> start, entries;
-    std::vector<Vec3> pair_force, torque_1, torque_2;  // per pair: F on 2, torque on 1, torque on 2
-    std::vector<Index> wall_start, wall_entries;
-    std::vector<Vec3> wall_force, wall_torque;          // per wall pair: force and torque on the particle
-    std::vector<std::uint8_t> wall_carries;             // per wall pair: 1 when it carries force
-    std::vector<double> unbalanced;                   // per particle (integrator)
-    std::vector<detail::LogSink> chunk_logs;          // per work chunk of the force loop
-  };
-
- private:
-  GatherScratch gather_;
+  ForcePartition partition_;               // threaded force path (engine/force_partition.hpp)
+  std::vector<double> unbalanced_scratch_;  // per particle (integrator)
 };
 
 }  // namespace colza
