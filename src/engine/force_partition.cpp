@@ -15,16 +15,24 @@ void ForcePartition::build(const ContactStore& contacts, std::size_t n, std::siz
   const auto& pp = contacts.particle_pairs;
   const auto& pw = contacts.wall_pairs;
   const std::size_t n_pairs = pp.size(), T = static_cast<std::size_t>(thread_count);
+  if (threads == thread_count && cut_fraction_.size() == T + 1) {
+    rebalance();
+  } else {
+    cut_fraction_.resize(T + 1);
+    for (std::size_t t = 0; t <= T; ++t) cut_fraction_[t] = static_cast<double>(t) / static_cast<double>(T);
+  }
   threads = thread_count;
+  busy_seconds.assign(T, 0.0);
 
-  // Ranges: cut the pair list into T equal parts, each cut moved back to the first pair of
-  // its first body (a body's pairs stay with one thread).
+  // Ranges: cut the pair list at the cut fractions, each cut moved back to the first pair
+  // of its first body (a body's pairs stay with one thread).
   particle_begin.assign(T + 1, 0);
   pair_begin.assign(T + 1, 0);
   particle_begin[T] = n;
   pair_begin[T] = n_pairs;
   for (std::size_t t = 1; t < T; ++t) {
-    const std::size_t cut = n_pairs * t / T;
+    const std::size_t cut =
+        std::min(n_pairs, static_cast<std::size_t>(cut_fraction_[t] * static_cast<double>(n_pairs)));
     std::size_t a = cut < n_pairs ? pp.first[cut] : n;
     a = std::max(a, particle_begin[t - 1]);
     particle_begin[t] = a;
@@ -99,6 +107,29 @@ void ForcePartition::build(const ContactStore& contacts, std::size_t n, std::siz
   n_pairs_ = n_pairs;
   n_particles_ = n;
   n_walls_ = n_walls;
+}
+
+void ForcePartition::rebalance() {
+  const std::size_t T = cut_fraction_.size() - 1;
+  double total = 0.0;
+  for (std::size_t t = 0; t < T; ++t) total += busy_seconds[t];
+  if (!(total > 0.0)) return;
+  // Busy time as a piecewise-linear function of the pair-list fraction (uniform cost within
+  // each old range); the new cut t sits where it reaches total * t / T. Half a step towards
+  // it damps timing noise.
+  std::vector<double> target(T + 1, 0.0);
+  target[T] = 1.0;
+  std::size_t r = 0;
+  double below = 0.0;  // busy time of ranges before r
+  for (std::size_t t = 1; t < T; ++t) {
+    const double want = total * static_cast<double>(t) / static_cast<double>(T);
+    while (r + 1 < T && below + busy_seconds[r] < want) below += busy_seconds[r++];
+    const double width = cut_fraction_[r + 1] - cut_fraction_[r];
+    const double share = busy_seconds[r] > 0.0 ? std::clamp((want - below) / busy_seconds[r], 0.0, 1.0) : 0.5;
+    target[t] = cut_fraction_[r] + share * width;
+  }
+  for (std::size_t t = 1; t < T; ++t)
+    cut_fraction_[t] = std::clamp(0.5 * (cut_fraction_[t] + target[t]), cut_fraction_[t - 1], 1.0);
 }
 
 }  // namespace colza

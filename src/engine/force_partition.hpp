@@ -16,6 +16,12 @@
 //   barrier its thread sums them in pair order (the gather list), then adds its walls.
 // With Morton-ordered particles the ranges are compact regions and boundary particles are
 // a thin layer (a few per cent), so nearly all pairs take the serial scatter's cost.
+//
+// Balance: the cuts are fractions of the pair list. Pairs do not cost the same (touching
+// pairs take the batched kernel, others the scalar test; wall pairs add to their range),
+// so each rebuild moves the cuts towards equal measured busy time of the ranges since the
+// last build. The partition never changes a result (every particle's sum keeps the serial
+// order), so timing-driven cuts keep runs bit for bit reproducible.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -46,6 +52,7 @@ struct ForcePartition {
   std::vector<std::uint8_t> wall_carries;   // per wall pair: 1 when it carried force this step
   std::vector<detail::LogSink> pair_logs;   // per range (pair order)
   std::vector<detail::LogSink> wall_logs;   // [w * T + t] (wall-pair order: w, then t)
+  std::vector<double> busy_seconds;         // per range: time spent on its pairs since the build
 
   // True when built for this pair list (same revision and storage), particle count,
   // wall count and thread count.
@@ -53,6 +60,9 @@ struct ForcePartition {
   void build(const ContactStore& contacts, std::size_t n_particles, std::size_t n_walls, int threads);
 
  private:
+  // Moves cut_fraction_ towards equal busy time, from busy_seconds of the current cuts.
+  void rebalance();
+  std::vector<double> cut_fraction_;        // T + 1 cuts as fractions of the pair list
   std::uint64_t revision_ = ~std::uint64_t{0};
   const Index* first_data_ = nullptr;
   std::size_t n_pairs_ = 0, n_particles_ = 0, n_walls_ = 0;

@@ -1,5 +1,6 @@
 #include "engine/stepper.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <variant>
 
@@ -51,6 +52,10 @@ using detail::SerialSink;
 // Below this many candidate pairs per thread the force loop runs serially (threading
 // overhead would dominate; also keeps tiny unit-test systems on the reference path).
 constexpr std::size_t kMinPairsPerThread = 1024;
+
+double seconds_now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 
 int worker_threads() {
 #ifdef _OPENMP
@@ -192,13 +197,16 @@ template <class Normal, class Tangential, class Bond>
 #endif
     ScatterOrStore out{force,           torque, part.slot.data(), part.boundary.data(), part.slot_force.data(),
                        part.slot_torque_1.data(), part.slot_torque_2.data()};
+    double started = seconds_now();
     for (std::size_t r = first_range; r < T; r += stride) {
       std::fill(force + part.particle_begin[r], force + part.particle_begin[r + 1], Vec3::Zero());
       std::fill(torque + part.particle_begin[r], torque + part.particle_begin[r + 1], Vec3::Zero());
       particle_pair_range(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, pp,
                           part.pair_begin[r], part.pair_begin[r + 1], out, part.pair_logs[r]);
     }
+    double busy = seconds_now() - started;
 #pragma omp barrier
+    started = seconds_now();
     const Index* start = part.gather_start.data();
     const Index* entries = part.gather_entries.data();
     const Vec3* slot_force = part.slot_force.data();
@@ -236,6 +244,10 @@ template <class Normal, class Tangential, class Bond>
         }
       }
     }
+    busy += seconds_now() - started;
+    // Measured cost of this thread's ranges, for the next partition (balance only).
+    const std::size_t my_ranges = (T - first_range + stride - 1) / stride;
+    for (std::size_t r = first_range; r < T; r += stride) part.busy_seconds[r] += busy / static_cast<double>(my_ranges);
   }
   for (const LogSink& s : part.pair_logs) {  // range order = pair order
     for (double v : s.slips) totals.slip += v;

@@ -182,4 +182,12 @@ TEST(ForcePaths, TwoThreadsGiveTheOneThreadBits) {
   expect_same_state(one.world, two.world);
   expect_same_pair_energies(one.ledger, two.ledger);
 }
+
+// Three ranges: a middle range has boundary particles and outgoing pairs at once.
+TEST(ForcePaths, ThreeThreadsGiveTheOneThreadBits) {
+  const PathRun one = run_path({1, true}, 1);
+  const PathRun three = run_path({1, true}, 3);
+  expect_same_state(one.world, three.world);
+  expect_same_pair_energies(one.ledger, three.ledger);
+}
 #endif
