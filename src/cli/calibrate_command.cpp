@@ -72,7 +72,7 @@ int calibrate_command(const CalibrateOptions& opt) {
     std::printf("calibrate %s (%s mode): %zu parameter(s), targets:", to_string(spec.stage), opt.mode.c_str(),
                 spec.problem.parameters.size());
     for (const auto& t : spec.problem.targets) std::printf(" %s = %.6g +/- %.3g %s;", t.name.c_str(), t.value, t.uncertainty, t.unit.c_str());
-    std::printf(" %d job(s)\n", opt.jobs);
+    std::printf(" %d job(s) x %d thread(s)\n", opt.jobs, opt.threads);
     std::fflush(stdout);
   }
   const fs::path out(opt.out_dir);

@@ -1,5 +1,5 @@
 // `colza calibrate density|compression|shear --spec FILE --out DIR [--mode paper|sequential]
-//  [--jobs N] [--force] [--quiet]`: the paper's staged calibration (sections 2.2, 3.2, 3.3)
+//  [--jobs N] [--threads N] [--force] [--quiet]`: the paper's staged calibration (sections 2.2, 3.2, 3.3)
 // or a sequential trust-region refinement, written to DIR/summary.json and DIR/report.md;
 // design runs are kept in DIR/runs/<fingerprint>/ and reused when the command runs again.
 #pragma once
@@ -13,6 +13,7 @@ struct CalibrateOptions {
   std::string out_dir;
   std::string mode = "paper";  // paper | sequential
   int jobs = 1;
+  int threads = 0;             // per design run; 0: default_worker_threads(jobs)
   bool force = false;
   bool quiet = false;
 };

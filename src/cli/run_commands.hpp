@@ -10,7 +10,7 @@ struct RunOptions {
   std::string config_path;            // empty: built-in defaults (= data/oedometer.toml)
   std::vector<std::string> overrides; // --set key=value
   long long seed = -1;                // --seed, -1: from the config
-  int threads = 1;
+  int threads = 0;                    // 0: default_worker_threads(jobs)
   std::string out_dir;
   bool force = false;
   bool quiet = false;

@@ -8,14 +8,14 @@ bool ForcePartition::matches(const ContactStore& contacts, std::size_t n_particl
                              int thread_count) const {
   return revision_ == contacts.revision() && first_data_ == contacts.particle_pairs.first.data() &&
          n_pairs_ == contacts.particle_pairs.size() && n_particles_ == n_particles && n_walls_ == n_walls &&
-         threads == thread_count;
+         threads == thread_count && steps_since_build < kStepsPerRebalance;
 }
 
 void ForcePartition::build(const ContactStore& contacts, std::size_t n, std::size_t n_walls, int thread_count) {
   const auto& pp = contacts.particle_pairs;
   const auto& pw = contacts.wall_pairs;
   const std::size_t n_pairs = pp.size(), T = static_cast<std::size_t>(thread_count);
-  if (threads == thread_count && cut_fraction_.size() == T + 1) {
+  if (threads == thread_count && cut_fraction_.size() == T + 1 && n_particles_ == n) {
     rebalance();
   } else {
     cut_fraction_.resize(T + 1);
@@ -23,6 +23,7 @@ void ForcePartition::build(const ContactStore& contacts, std::size_t n, std::siz
   }
   threads = thread_count;
   busy_seconds.assign(T, 0.0);
+  steps_since_build = 0;
 
   // Ranges: cut the pair list at the cut fractions, each cut moved back to the first pair
   // of its first body (a body's pairs stay with one thread).

@@ -19,8 +19,10 @@
 //
 // Balance: the cuts are fractions of the pair list. Pairs do not cost the same (touching
 // pairs take the batched kernel, others the scalar test; wall pairs add to their range),
-// so each rebuild moves the cuts towards equal measured busy time of the ranges since the
-// last build. The partition never changes a result (every particle's sum keeps the serial
+// so the cuts move towards equal measured busy time of the ranges: at every neighbour
+// rebuild, and every kStepsPerRebalance steps in between (a slow loading may keep its
+// lists for tens of thousands of steps). A new system (another particle count) starts
+// from equal pair counts. The partition never changes a result (every particle's sum keeps the serial
 // order), so timing-driven cuts keep runs bit for bit reproducible.
 #pragma once
 #include <cstdint>
@@ -53,9 +55,12 @@ struct ForcePartition {
   std::vector<detail::LogSink> pair_logs;   // per range (pair order)
   std::vector<detail::LogSink> wall_logs;   // [w * T + t] (wall-pair order: w, then t)
   std::vector<double> busy_seconds;         // per range: time spent on its pairs since the build
+  std::uint64_t steps_since_build = 0;      // counted by the force loop
+
+  static constexpr std::uint64_t kStepsPerRebalance = 1000;
 
   // True when built for this pair list (same revision and storage), particle count,
-  // wall count and thread count.
+  // wall count and thread count, less than kStepsPerRebalance steps ago.
   bool matches(const ContactStore& contacts, std::size_t n_particles, std::size_t n_walls, int threads) const;
   void build(const ContactStore& contacts, std::size_t n_particles, std::size_t n_walls, int threads);
 

@@ -185,6 +185,7 @@ template <class Normal, class Tangential, class Bond>
   Vec3* force = p.force.data();
   Vec3* torque = p.torque.data();
   const double dt = world.dt, half_dt = 0.5 * dt;
+  ++part.steps_since_build;
   for (auto& log : part.pair_logs) log.clear();
   for (auto& log : part.wall_logs) log.clear();
 #pragma omp parallel num_threads(part.threads)
