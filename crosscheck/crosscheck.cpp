@@ -220,7 +220,7 @@ class Runner {
   bool run_colza(const std::string& scenario, const fs::path& config, const fs::path& out,
                  const std::vector<std::string>& sets = {}, const std::vector<std::string>& extra = {}) {
     std::string cmd = quote(opt_.colza.string()) + " run " + scenario + " --config " + quote(config.string()) +
-                      " --out " + quote(out.string()) + " --force --quiet";
+                      " --out " + quote(out.string()) + " --force --quiet --threads 1";  // as YADE -j 1
     for (const auto& s : sets) cmd += " --set " + quote(s);
     for (const auto& e : extra) cmd += " " + quote(e);
     fs::create_directories(out.parent_path());

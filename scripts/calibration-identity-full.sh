@@ -1,31 +1,52 @@
 #!/usr/bin/env bash
 # Full-size identity tests of `colza calibrate` (issue 6): synthetic "measured" data made by
 # colza at known parameters other than the paper's, then recovered by the paper's procedure
-# and by the sequential mode. About 40 min on 2 cores.
+# and by the sequential mode.
 #   density:     truth rho_p = 1280 kg/m^3 (Table 1 otherwise)  -> its bulk density
 #   compression: truth kn_p = 470e3 N/m, mu_pp = 0.33, rho_p = 1230 -> its compression curve
-# Usage: scripts/calibration-identity-full.sh [WORKDIR]   (default /tmp/colza-identity-full)
+#   shear:       truth Cn = 1.8 N, Cs = 3.3 N (Table 2 otherwise) -> its shear curves at 25.75
+#                and 78.75 kPa (the paper's box, 30 mm of shear)
+# density + compression: about 40 min on 2 cores. shear: hours (each design point is two
+# 30 mm loads of 11342 spheres, ~8 min each on 2 cores; ~12 loads per mode plus the truth).
+# Calibrations reuse finished design runs, so an interrupted run continues where it stopped.
+# Usage: scripts/calibration-identity-full.sh [WORKDIR [STAGE ...]]
+#        (default /tmp/colza-identity-full, stages density compression; add shear explicitly)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 colza="$root/build/src/colza"
 work="${1:-/tmp/colza-identity-full}"
+shift || true
+stages=("$@")
+[ ${#stages[@]} -eq 0 ] && stages=(density compression)
+wants() { local x; for x in "${stages[@]}"; do [ "$x" = "$1" ] && return 0; done; return 1; }
 mkdir -p "$work"
 cd "$work"
 oed="$root/data/oedometer.toml"
 density_stop=(--set oedometer.stop_force=200.0 --set oedometer.fit_force_max=190.0 --set oedometer.fit_force_min=10.0)
 
-"$colza" run oedometer --config "$oed" --set particle.density=1280 "${density_stop[@]}" --out truth-density --force --quiet
-"$colza" run oedometer --config "$oed" --set particle.density=1230 --set particle.normal_stiffness=470e3 \
-  --set particle.friction=0.33 --out truth-compression --force --quiet
+if wants density; then
+  "$colza" run oedometer --config "$oed" --set particle.density=1280 "${density_stop[@]}" --out truth-density --force --quiet
+  bulk=$(python3 -c "import json; print(repr(json.load(open('truth-density/summary.json'))['bulk_density']))")
+  sed -e "s|@OEDOMETER_CONFIG@|$oed|" -e "s|@BULK_DENSITY@|$bulk|" "$root/data/calibration/identity/density_full.toml" > density_full.toml
+fi
+if wants compression; then
+  "$colza" run oedometer --config "$oed" --set particle.density=1230 --set particle.normal_stiffness=470e3 \
+    --set particle.friction=0.33 --out truth-compression --force --quiet
+  sed -e "s|@OEDOMETER_CONFIG@|$oed|" -e "s|@TRUTH_CURVE@|$work/truth-compression/curve.csv|" \
+    "$root/data/calibration/identity/compression_full.toml" > compression_full.toml
+fi
+if wants shear; then
+  shear="$root/data/shear.toml"
+  [ -f truth-shear/summary.json ] || "$colza" run shear-series --config "$shear" \
+    --set 'shear_box.normal_stresses=[25750.0, 78750.0]' --set contact.contact_bond.normal_strength=1.8 \
+    --set contact.contact_bond.shear_strength=3.3 --out truth-shear --quiet
+  sed -e "s|@SHEAR_CONFIG@|$shear|" -e "s|@TRUTH_PACKING@|$work/truth-shear/packing.txt|" \
+    -e "s|@TRUTH_DIR@|$work/truth-shear|" "$root/data/calibration/identity/shear_full.toml" > shear_full.toml
+fi
 
-bulk=$(python3 -c "import json; print(repr(json.load(open('truth-density/summary.json'))['bulk_density']))")
-sed -e "s|@OEDOMETER_CONFIG@|$oed|" -e "s|@BULK_DENSITY@|$bulk|" "$root/data/calibration/identity/density_full.toml" > density_full.toml
-sed -e "s|@OEDOMETER_CONFIG@|$oed|" -e "s|@TRUTH_CURVE@|$work/truth-compression/curve.csv|" \
-  "$root/data/calibration/identity/compression_full.toml" > compression_full.toml
-
-for stage in density compression; do
+for stage in "${stages[@]}"; do
   for mode in paper sequential; do
     echo "== $stage, $mode"
-    "$colza" calibrate "$stage" --spec "${stage}_full.toml" --mode "$mode" --jobs 2 --out "out-$stage-$mode" --force --quiet || true
+    "$colza" calibrate "$stage" --spec "${stage}_full.toml" --mode "$mode" --out "out-$stage-$mode" --force --quiet || true
   done
 done

@@ -5,10 +5,6 @@
 #include <cstdlib>
 #include <exception>
 
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
-
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -35,14 +31,6 @@ int default_worker_threads(int jobs) {
 }  // namespace
 
 int main(int argc, char** argv) {
-#ifdef __GLIBC__
-  // Large arrays (particle state, pair lists) always from mmap, page-aligned. glibc
-  // otherwise raises its mmap threshold when the first large block is freed (after the
-  // settling stage), and the stages after it get their arrays from the heap: measured on the
-  // shear box (11342 spheres, 2 threads) 18 M particle-steps/s in consolidation instead of
-  // 22 M, the same run from its packing file. Speed only: results are unchanged.
-  mallopt(M_MMAP_THRESHOLD, 128 * 1024);
-#endif
   CLI::App app{"colza: discrete element simulation of oilseed bulks (oedometer, shear box)"};
   app.set_version_flag("--version", std::string("colza ") + colza::kVersion + " (" + colza::git_revision() + ")");
   app.require_subcommand(1);
