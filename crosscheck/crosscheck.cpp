@@ -2,7 +2,7 @@
 // section 6; YADE is the independent referee of colza's physics).
 //
 //   crosscheck micro|oedometer|shear|all [--size small|full] [--colza PATH] [--yade PATH]
-//              [--workdir DIR] [--source DIR] [--tolerances FILE]
+//              [--workdir DIR] [--source DIR] [--tolerances FILE] [--reuse]
 //
 //   micro      deterministic 2-3 body scenes (crosscheck/scenes/micro_*.toml) run by
 //              `colza run scene` and yade-scripts/run_scene.py; their time series must agree
@@ -17,6 +17,10 @@
 //              deterministic start must coincide, then per load the shear strength, mean
 //              normal stress and shear-stress curve, and C and Phi of the loads, are compared;
 //   all        micro, the small oedometer and shear (and the full ones with --size full).
+//
+// --reuse: a run whose output directory in --workdir already holds summary.json (both codes
+// write it last) is not run again, so an interrupted full-size cross-check (hours of YADE)
+// continues where it stopped. Only for a workdir made from the same sources and configs.
 //
 // Prints a table (metric, colza, YADE, difference, tolerance, PASS/FAIL) and both codes'
 // speed. Exit code: 0 all passed, 1 something failed, 2 bad usage or a run failed to
@@ -199,6 +203,7 @@ struct Options {
   std::string size = "small";
   fs::path colza, source, workdir, tolerances;
   std::string yade = "yade";
+  bool reuse = false;
 };
 
 double tol_number(const toml::table& t, const std::string& path, double fallback) {
@@ -223,6 +228,7 @@ class Runner {
                       " --out " + quote(out.string()) + " --force --quiet --threads 1";  // as YADE -j 1
     for (const auto& s : sets) cmd += " --set " + quote(s);
     for (const auto& e : extra) cmd += " " + quote(e);
+    if (reused(out)) return true;
     fs::create_directories(out.parent_path());
     const fs::path log = out.string() + ".log";
     const RunResult r = run_logged(cmd, log);
@@ -233,12 +239,20 @@ class Runner {
     return true;
   }
 
+  // --reuse: a finished run (summary.json present) stands.
+  bool reused(const fs::path& out) const {
+    if (!opt_.reuse || !fs::exists(out / "summary.json")) return false;
+    std::printf("crosscheck: reusing %s\n", out.string().c_str());
+    return true;
+  }
+
   bool run_yade(const std::string& script, const fs::path& config, const fs::path& out,
                 const std::vector<std::string>& extra = {}) {
     const fs::path py = opt_.source / "yade-scripts" / script;
     std::string cmd = quote(opt_.yade) + " -n -j 1 -x " + quote(py.string()) + " " + quote(config.string()) + " " +
                       quote(out.string());
     for (const auto& e : extra) cmd += " " + quote(e);
+    if (reused(out)) return true;
     fs::create_directories(out.parent_path());
     const fs::path log = out.string() + ".log";
     const RunResult r = run_logged(cmd, log);
@@ -727,7 +741,7 @@ int usage(const char* msg) {
   if (msg) std::fprintf(stderr, "crosscheck: %s\n", msg);
   std::fprintf(stderr,
                "usage: crosscheck micro|oedometer|shear|all [--size small|full] [--colza PATH] [--yade PATH]\n"
-               "                  [--workdir DIR] [--source DIR] [--tolerances FILE]\n");
+               "                  [--workdir DIR] [--source DIR] [--tolerances FILE] [--reuse]\n");
   return kExitUsage;
 }
 
@@ -754,6 +768,7 @@ int main(int argc, char** argv) {
       else if (a == "--workdir") opt.workdir = value();
       else if (a == "--source") opt.source = value();
       else if (a == "--tolerances") opt.tolerances = value();
+      else if (a == "--reuse") opt.reuse = true;
       else if (a == "-h" || a == "--help") return usage(nullptr), 0;
       else if (!a.empty() && a[0] == '-') return usage(("unknown option " + a).c_str());
       else if (opt.what.empty()) opt.what = a;
