@@ -16,8 +16,9 @@
 namespace {
 
 // Worker threads when --threads is not given: OMP_NUM_THREADS if set, else the machine's
-// cores shared among the concurrent jobs. Results are the same bit for bit at any count
-// (ARCHITECTURE.md, Performance), so the default only decides the speed.
+// cores shared among the concurrent jobs. The simulation is the same bit for bit at any
+// count (ARCHITECTURE.md, Performance; only the damping-energy total is summed per thread
+// range), so the default only decides the speed.
 int default_worker_threads(int jobs) {
   if (const char* env = std::getenv("OMP_NUM_THREADS"); env && std::atoi(env) > 0) return std::atoi(env);
 #ifdef _OPENMP
@@ -49,7 +50,8 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   run->add_option("--threads", opt.threads,
                   "worker threads per run (default: OMP_NUM_THREADS, else the cores divided by --jobs; "
-                  "results are the same at any count)")
+                  "the simulation is the same bit for bit at any count, only the damping-energy total "
+                  "may differ in its last bits)")
       ->check(CLI::PositiveNumber);
   run->add_option("--out", opt.out_dir, "output directory")->required();
   run->add_flag("--force", opt.force, "replace an earlier result in --out (only once the new run has succeeded)");

@@ -35,7 +35,7 @@ class ContactStore {
   void renumber_particles(const std::vector<Index>& old_to_new);
 
   // Bumped whenever adopt_* or renumber_particles replaces the lists, so that derived
-  // index structures (the stepper's per-particle gather lists) know when to rebuild.
+  // index structures (the threaded force loop's ForcePartition) know when to rebuild.
   std::uint64_t revision() const { return revision_; }
 
   std::size_t touching_particle_contacts() const;

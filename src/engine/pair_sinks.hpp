@@ -19,7 +19,7 @@ inline void count_event(ContactEvent e, std::uint64_t& tension, std::uint64_t& s
 
 // Where the rare per-pair results go. The serial sink adds them to the totals at once, in
 // pair order (the reference order). The logging sink keeps the non-zero ones of one
-// contiguous chunk of pairs in pair order; chunk logs replayed in chunk order give the same
+// contiguous range of pairs in pair order; range logs replayed in range order give the same
 // sums as the serial sink (adding +0.0 to a sum that started at +0.0 changes nothing).
 struct SerialSink {
   ForceLoopTotals& t;

@@ -66,7 +66,7 @@ int worker_threads() {
 }
 
 // Where a pair's force goes. Serial: straight onto the bodies (body 2 gets +f and +t_j,
-// body 1 gets -f and -t_i). Threaded: into per-pair buffers, gathered per particle later.
+// body 1 gets -f and -t_i). Threaded: ScatterOrStore below.
 struct ScatterToBodies {
   Vec3* force;
   Vec3* torque;
@@ -196,7 +196,7 @@ template <class Normal, class Tangential, class Bond>
 #else
     const std::size_t first_range = 0, stride = 1;
 #endif
-    ScatterOrStore out{force,           torque, part.slot.data(), part.boundary.data(), part.slot_force.data(),
+    ScatterOrStore out{force, torque, part.slot.data(), part.boundary.data(), part.slot_force.data(),
                        part.slot_torque_1.data(), part.slot_torque_2.data()};
     double started = seconds_now();
     for (std::size_t r = first_range; r < T; r += stride) {

@@ -1,7 +1,8 @@
 // The three force-loop paths give the same bits (engine/stepper.cpp, engine/pair_batch.hpp):
 //   * the scalar reference loop (taken when there is more than one particle material),
 //   * the batched kernel (one contact per SIMD lane, one particle material),
-//   * the threaded path (pairs in chunks, per-particle gather in pair order), 2 threads.
+//   * the threaded path (particle ranges, boundary particles summed from slots in pair
+//     order, engine/force_partition.hpp), 2 and 3 threads.
 // A dense, jostling packing of 1200 spheres in a closed box (several thousand candidate pairs,
 // above the threaded path's threshold of 2048) with friction sliding, contacts forming and separating, bonds
 // holding and breaking, runs 300 steps on each path; positions, velocities, spins and
