@@ -308,6 +308,7 @@ void Stepper::compute_forces(World& world) {
   const bool threaded = threads > 1 && world.contacts.particle_pairs.size() >= kMinPairsPerThread * 2;
   if (threaded && !partition_.matches(world.contacts, world.particles.size(), world.walls.size(), threads))
     partition_.build(world.contacts, world.particles.size(), world.walls.size(), threads);
+  if (threaded) ++threaded_force_steps_;
   ForceLoopTotals totals;
   std::visit(
       [&](const auto& normal, const auto& tangential, const auto& bond) {

@@ -53,6 +53,8 @@ class Stepper {
   const EnergyLedger& ledger() const { return ledger_; }
   const ContactEvents& events() const { return events_; }  // cumulative
   const NeighbourSearch& neighbours() const { return neighbours_; }
+  // Steps whose forces took the threaded path (engine/force_partition.hpp); for tests.
+  std::uint64_t threaded_force_steps() const { return threaded_force_steps_; }
   void rebuild_neighbours_now(World& world) { neighbours_.rebuild(world.particles, world.walls, world.contacts); }
 
  private:
@@ -64,6 +66,7 @@ class Stepper {
   EnergyLedger ledger_;
   ContactEvents events_;
 
+  std::uint64_t threaded_force_steps_ = 0;
   ForcePartition partition_;               // threaded force path (engine/force_partition.hpp)
   std::vector<double> unbalanced_scratch_;  // per particle (integrator)
 };

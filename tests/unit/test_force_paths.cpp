@@ -84,6 +84,7 @@ struct PathRun {
   std::size_t max_pairs = 0;
   std::uint64_t broken_tension = 0, broken_shear = 0;
   EnergyLedger ledger;
+  std::uint64_t threaded_steps = 0;
 };
 
 PathRun run_path(const Setup& setup, int threads) {
@@ -103,6 +104,7 @@ PathRun run_path(const Setup& setup, int threads) {
   r.broken_tension = stepper.events().bonds_broken_tension;
   r.broken_shear = stepper.events().bonds_broken_shear;
   r.ledger = stepper.ledger();
+  r.threaded_steps = stepper.threaded_force_steps();
 #ifdef _OPENMP
   omp_set_num_threads(saved);
 #endif
@@ -177,6 +179,8 @@ TEST(ForcePaths, TwoThreadsGiveTheOneThreadBits) {
   const PathRun one = run_path({1, true}, 1);
   const PathRun two = run_path({1, true}, 2);
   ASSERT_GE(one.max_pairs, 2048u);  // the threaded path's threshold (stepper.cpp) is reached
+  EXPECT_EQ(one.threaded_steps, 0u);
+  EXPECT_EQ(two.threaded_steps, 300u);  // every step took the threaded path
   ASSERT_GT(one.world.contacts.touching_wall_contacts(), 100u);  // wall pairs take the threaded path too
   EXPECT_GT(one.ledger.slip_dissipated, 0.0);
   EXPECT_NE(one.ledger.wall_work, 0.0);
@@ -188,6 +192,7 @@ TEST(ForcePaths, TwoThreadsGiveTheOneThreadBits) {
 TEST(ForcePaths, ThreeThreadsGiveTheOneThreadBits) {
   const PathRun one = run_path({1, true}, 1);
   const PathRun three = run_path({1, true}, 3);
+  EXPECT_EQ(three.threaded_steps, 300u);
   expect_same_state(one.world, three.world);
   expect_same_pair_energies(one.ledger, three.ledger);
 }
