@@ -224,11 +224,11 @@ class Runner {
 
   bool run_colza(const std::string& scenario, const fs::path& config, const fs::path& out,
                  const std::vector<std::string>& sets = {}, const std::vector<std::string>& extra = {}) {
+    if (reused(out)) return true;
     std::string cmd = quote(opt_.colza.string()) + " run " + scenario + " --config " + quote(config.string()) +
                       " --out " + quote(out.string()) + " --force --quiet --threads 1";  // as YADE -j 1
     for (const auto& s : sets) cmd += " --set " + quote(s);
     for (const auto& e : extra) cmd += " " + quote(e);
-    if (reused(out)) return true;
     fs::create_directories(out.parent_path());
     const fs::path log = out.string() + ".log";
     const RunResult r = run_logged(cmd, log);
@@ -248,11 +248,11 @@ class Runner {
 
   bool run_yade(const std::string& script, const fs::path& config, const fs::path& out,
                 const std::vector<std::string>& extra = {}) {
+    if (reused(out)) return true;
     const fs::path py = opt_.source / "yade-scripts" / script;
     std::string cmd = quote(opt_.yade) + " -n -j 1 -x " + quote(py.string()) + " " + quote(config.string()) + " " +
                       quote(out.string());
     for (const auto& e : extra) cmd += " " + quote(e);
-    if (reused(out)) return true;
     fs::create_directories(out.parent_path());
     const fs::path log = out.string() + ".log";
     const RunResult r = run_logged(cmd, log);

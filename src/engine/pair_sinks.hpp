@@ -47,6 +47,14 @@ struct LogSink {
     releases.clear();
     broken_tension = broken_shear = 0;
   }
+  // Adds the logged values to the totals in logged order (what a SerialSink would have done).
+  void replay_into(ForceLoopTotals& t) const {
+    for (double v : slips) t.slip += v;
+    for (double v : brokens) t.broken += v;
+    for (double v : releases) t.released += v;
+    t.broken_tension += broken_tension;
+    t.broken_shear += broken_shear;
+  }
 };
 
 }  // namespace colza::detail

@@ -65,6 +65,21 @@ int worker_threads() {
 #endif
 }
 
+// The walls' per-step sums, accumulated in wall-pair order by both force loops.
+void clear_wall_sums(std::vector<Wall>& walls) {
+  for (auto& wall : walls) {
+    wall.force.setZero();
+    wall.contact_count = 0;
+  }
+}
+// Wall pair carrying force f (N) on its particle: the wall takes -f, counts the contact,
+// and the power of the wall on the particle f . v_wall (W) goes to the ledger.
+inline void wall_takes(Wall& wall, const Vec3& f, ForceLoopTotals& totals) {
+  wall.force -= f;
+  ++wall.contact_count;
+  totals.wall_power += f.dot(wall.velocity);
+}
+
 // Where a pair's force goes. Serial: straight onto the bodies (body 2 gets +f and +t_j,
 // body 1 gets -f and -t_i). Threaded: ScatterOrStore below.
 struct ScatterToBodies {
@@ -250,27 +265,11 @@ template <class Normal, class Tangential, class Bond>
     const std::size_t my_ranges = (T - first_range + stride - 1) / stride;
     for (std::size_t r = first_range; r < T; r += stride) part.busy_seconds[r] += busy / static_cast<double>(my_ranges);
   }
-  for (const LogSink& s : part.pair_logs) {  // range order = pair order
-    for (double v : s.slips) totals.slip += v;
-    for (double v : s.brokens) totals.broken += v;
-    for (double v : s.releases) totals.released += v;
-    totals.broken_tension += s.broken_tension;
-    totals.broken_shear += s.broken_shear;
-  }
-  for (const LogSink& s : part.wall_logs)  // [w * T + t]: wall-pair order
-    for (double v : s.slips) totals.slip += v;
-  for (auto& wall : world.walls) {
-    wall.force.setZero();
-    wall.contact_count = 0;
-  }
-  for (std::size_t c = 0; c < pw.size(); ++c) {
-    if (!part.wall_carries[c]) continue;
-    Wall& wall = world.walls[pw.wall[c]];
-    const Vec3& f = part.wall_force[c];
-    wall.force -= f;
-    ++wall.contact_count;
-    totals.wall_power += f.dot(wall.velocity);  // power of the wall on the particle (W)
-  }
+  for (const LogSink& s : part.pair_logs) s.replay_into(totals);  // range order = pair order
+  for (const LogSink& s : part.wall_logs) s.replay_into(totals);  // [w * T + t]: wall-pair order
+  clear_wall_sums(world.walls);
+  for (std::size_t c = 0; c < pw.size(); ++c)
+    if (part.wall_carries[c]) wall_takes(world.walls[pw.wall[c]], part.wall_force[c], totals);
 }
 
 // Sphere-wall pairs (serial, after the particle pairs, as in the reference loop).
@@ -280,10 +279,7 @@ template <class Normal, class Tangential>
   ParticleArrays& p = world.particles;
   const double dt = world.dt, half_dt = 0.5 * dt;
   auto& pw = world.contacts.wall_pairs;
-  for (auto& wall : world.walls) {
-    wall.force.setZero();
-    wall.contact_count = 0;
-  }
+  clear_wall_sums(world.walls);
   SerialSink sink{totals};
   const std::size_t n_wall_pairs = pw.size();
   for (std::size_t c = 0; c < n_wall_pairs; ++c) {
@@ -294,9 +290,7 @@ template <class Normal, class Tangential>
       continue;
     p.force[i] += f;
     p.torque[i] += torque;
-    wall.force -= f;
-    ++wall.contact_count;
-    totals.wall_power += f.dot(wall.velocity);  // power of the wall on the particle (W)
+    wall_takes(wall, f, totals);
   }
 }
 
@@ -306,9 +300,11 @@ void Stepper::compute_forces(World& world) {
   const bool bond_new = physics_.model.bond_install == BondInstallMoment::kOnNewContacts;
   const int threads = worker_threads();
   const bool threaded = threads > 1 && world.contacts.particle_pairs.size() >= kMinPairsPerThread * 2;
-  if (threaded && !partition_.matches(world.contacts, world.particles.size(), world.walls.size(), threads))
-    partition_.build(world.contacts, world.particles.size(), world.walls.size(), threads);
-  if (threaded) ++threaded_force_steps_;
+  if (threaded) {
+    if (!partition_.matches(world.contacts, world.particles.size(), world.walls.size(), threads))
+      partition_.build(world.contacts, world.particles.size(), world.walls.size(), threads);
+    ++threaded_force_steps_;
+  }
   ForceLoopTotals totals;
   std::visit(
       [&](const auto& normal, const auto& tangential, const auto& bond) {
