@@ -80,7 +80,18 @@ std::vector<ResponseSurface> fit_surfaces(const Problem& p, const std::vector<Ru
   return s;
 }
 
-// Fills the solution's Jacobian, predicted targets and parameter uncertainties.
+// What a target's error is judged against: the measurement uncertainty u_i, combined with
+// the realisation scatter s_i when it was measured, for the mean of `averaged` realisations:
+// sqrt(u_i^2 + s_i^2 / averaged).
+Eigen::VectorXd tolerances(const Problem& p, const Eigen::VectorXd& scatter, int averaged) {
+  Eigen::VectorXd t = target_sigmas(p);
+  if (scatter.size() == t.size())
+    t = (t.array().square() + scatter.array().square() / static_cast<double>(averaged)).sqrt().matrix();
+  return t;
+}
+
+// Fills the solution's Jacobian, predicted targets and parameter uncertainties: measurement
+// (sigma_t), surface residual (sigma_s) and, when measured, realisation scatter (s).
 void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>& s, CalibrationResult& r) {
   const Eigen::Index n = static_cast<Eigen::Index>(p.parameters.size());
   r.jacobian = surfaces_jacobian(s, r.solution);
@@ -88,7 +99,9 @@ void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>&
   const Eigen::VectorXd sig_t = target_sigmas(p);
   Eigen::VectorXd sig_s(s.size());
   for (std::size_t i = 0; i < s.size(); ++i) sig_s[i] = s[i].residual_std();
-  const Eigen::VectorXd w = sig_t.array().square().inverse();
+  const bool scatter = r.scatter.size() == sig_t.size();
+  const Eigen::VectorXd sig_r = scatter ? r.scatter : Eigen::VectorXd::Zero(sig_t.size());
+  const Eigen::VectorXd w = (sig_t.array().square() + sig_r.array().square()).inverse();
   const Eigen::MatrixXd JtW = r.jacobian.transpose() * w.asDiagonal();
   const Eigen::MatrixXd normal = JtW * r.jacobian;
   Eigen::MatrixXd G;
@@ -97,21 +110,45 @@ void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>&
     r.warnings.push_back("the fitted surfaces are (nearly) flat in some parameter at the solution: the parameter is not "
                          "determined by the targets; its uncertainty is reported as infinite");
     const double inf = std::numeric_limits<double>::infinity();
-    r.sigma_target = r.sigma_surface = r.sigma = Eigen::VectorXd::Constant(n, inf);
+    r.sigma_target = r.sigma_surface = r.sigma_scatter = r.sigma = Eigen::VectorXd::Constant(n, inf);
     return;
   }
   G = lu.solve(JtW);  // dx = G dy (= J^-1 for a square system)
-  const Eigen::MatrixXd cov_t = G * sig_t.array().square().matrix().asDiagonal() * G.transpose();
-  const Eigen::MatrixXd cov_s = G * sig_s.array().square().matrix().asDiagonal() * G.transpose();
+  auto covariance = [&](const Eigen::VectorXd& sig) {
+    return Eigen::MatrixXd(G * sig.array().square().matrix().asDiagonal() * G.transpose());
+  };
+  const Eigen::MatrixXd cov_t = covariance(sig_t), cov_s = covariance(sig_s), cov_r = covariance(sig_r);
   r.sigma_target = cov_t.diagonal().cwiseSqrt();
   r.sigma_surface = cov_s.diagonal().cwiseSqrt();
-  r.sigma = (cov_t + cov_s).diagonal().cwiseSqrt();
+  r.sigma_scatter = cov_r.diagonal().cwiseSqrt();
+  r.sigma = (cov_t + cov_s + cov_r).diagonal().cwiseSqrt();
 }
 
-void finish_validation(const Problem& p, CalibrationResult& r, const Eigen::VectorXd& achieved) {
+void finish_validation(const Problem& p, CalibrationResult& r, const Eigen::VectorXd& achieved,
+                       const Eigen::VectorXd& tolerance) {
   r.achieved = achieved;
   r.error = achieved - target_values(p);
-  r.within_uncertainty = normalised_misfit(p, achieved) <= 1.0;
+  r.tolerance = tolerance;
+  r.within_uncertainty = normalised_misfit(p, achieved, tolerance) <= 1.0;
+}
+
+// Realisations 1..R of the point x (run y0 is realisation 0): appended to r.runs as
+// "replicate" runs, up to `jobs` at once; sets r.scatter and r.scatter_at and returns all
+// R + 1 realisations.
+std::vector<Eigen::VectorXd> measure_scatter(const Problem& p, const LoopOptions& opt, const Eigen::VectorXd& x,
+                                             const Eigen::VectorXd& y0, int iteration, CalibrationResult& r) {
+  const std::size_t extra = static_cast<std::size_t>(p.replicates);
+  std::vector<Eigen::VectorXd> ys(extra);
+  run_concurrently(extra, opt.jobs, [&](std::size_t k) { ys[k] = opt.replicate_model(x, static_cast<int>(k) + 1); });
+  std::vector<Eigen::VectorXd> all{y0};
+  for (std::size_t k = 0; k < extra; ++k) {
+    r.runs.push_back({x, ys[k], "replicate", iteration, static_cast<int>(k) + 1});
+    if (opt.on_run) opt.on_run(r.runs.back());
+    all.push_back(ys[k]);
+  }
+  r.scatter = realisation_scatter(all);
+  r.scatter_at = x;
+  return all;
 }
 
 void surface_warnings(const Problem& p, const std::vector<ResponseSurface>& s, std::vector<std::string>& w) {
@@ -137,13 +174,42 @@ Eigen::VectorXd round_point(Eigen::VectorXd x) {
   return x;
 }
 
+void require_replicate_model(const Problem& p, const LoopOptions& opt) {
+  if (p.replicates > 0 && !opt.replicate_model)
+    throw CalibrationError("scatter.replicates", "this forward model has no other realisations (seeds) to measure the "
+                                                 "scatter with: set replicates = 0");
+}
+
+// A scatter larger than the measurement uncertainty: one run cannot resolve the target.
+void scatter_warnings(const Problem& p, CalibrationResult& r) {
+  for (std::size_t i = 0; i < p.targets.size(); ++i)
+    if (r.scatter[static_cast<Eigen::Index>(i)] > p.targets[i].uncertainty)
+      r.warnings.push_back("the realisation scatter of " + p.targets[i].name + " (std " + fmt(r.scatter[i]) + " " +
+                           p.targets[i].unit + " over " + std::to_string(p.replicates + 1) +
+                           " seeds) exceeds its measurement uncertainty (" + fmt(p.targets[i].uncertainty) +
+                           "): one run cannot resolve this target; the parameter uncertainty includes the scatter. "
+                           "A larger sample or runs averaged over seeds would narrow it");
+}
+
 }  // namespace
 
-double normalised_misfit(const Problem& p, const Eigen::VectorXd& y) {
+double normalised_misfit(const Problem& p, const Eigen::VectorXd& y) { return normalised_misfit(p, y, target_sigmas(p)); }
+
+double normalised_misfit(const Problem& p, const Eigen::VectorXd& y, const Eigen::VectorXd& tolerance) {
   double m = 0.0;
-  for (std::size_t i = 0; i < p.targets.size(); ++i)
-    m = std::max(m, std::abs(y[i] - p.targets[i].value) / p.targets[i].uncertainty);
+  for (std::size_t i = 0; i < p.targets.size(); ++i) m = std::max(m, std::abs(y[i] - p.targets[i].value) / tolerance[i]);
   return m;
+}
+
+Eigen::VectorXd realisation_scatter(const std::vector<Eigen::VectorXd>& ys) {
+  if (ys.empty()) return {};
+  const Eigen::Index m = ys[0].size();
+  Eigen::VectorXd mean = Eigen::VectorXd::Zero(m), var = Eigen::VectorXd::Zero(m);
+  for (const auto& y : ys) mean += y;
+  mean /= static_cast<double>(ys.size());
+  if (ys.size() < 2) return var;
+  for (const auto& y : ys) var += (y - mean).array().square().matrix();
+  return (var / static_cast<double>(ys.size() - 1)).cwiseSqrt();
 }
 
 void validate_problem(const Problem& p, bool sequential) {
@@ -170,6 +236,7 @@ void validate_problem(const Problem& p, bool sequential) {
     throw CalibrationError("design", "too few design points for a plane in " + std::to_string(p.parameters.size()) +
                                          " parameter(s): " + std::to_string(p.design.size()) + " given, at least " +
                                          std::to_string(need) + " needed");
+  if (p.replicates < 0) throw CalibrationError("scatter.replicates", "must be >= 0");
   if (sequential && p.max_runs < static_cast<int>(need) + 1)
     throw CalibrationError("sequential.max_runs", "the budget must allow the " + std::to_string(need) +
                                                       " start points and at least one refinement run");
@@ -310,6 +377,7 @@ Eigen::VectorXd solve_on_surfaces(const std::vector<ResponseSurface>& s, const P
 
 CalibrationResult calibrate_paper(const Problem& p, const ForwardModel& model, const LoopOptions& opt) {
   validate_problem(p, false);
+  require_replicate_model(p, opt);
   CalibrationResult r;
   r.mode = "paper";
   const std::vector<Eigen::VectorXd> ys = evaluate_batch(model, p.design, opt.jobs);
@@ -323,20 +391,34 @@ CalibrationResult calibrate_paper(const Problem& p, const ForwardModel& model, c
   r.surface_points = idx;
   surface_warnings(p, r.surfaces, r.warnings);
   r.solution = round_point(solve_on_surfaces(r.surfaces, p, p.lower(), p.upper(), p.design, true));
-  propagate_uncertainty(p, r.surfaces, r);
   r.runs.push_back({r.solution, model(r.solution), "validation", 1});
   if (opt.on_run) opt.on_run(r.runs.back());
-  finish_validation(p, r, r.runs.back().y);
+  Eigen::VectorXd achieved = r.runs.back().y;
+  int averaged = 1;
+  if (p.replicates > 0) {  // the validation's realisations; the mean is what is validated
+    const auto all = measure_scatter(p, opt, r.solution, achieved, 1, r);
+    achieved.setZero();
+    for (const auto& y : all) achieved += y;
+    achieved /= static_cast<double>(all.size());
+    averaged = static_cast<int>(all.size());
+    scatter_warnings(p, r);
+  }
+  propagate_uncertainty(p, r.surfaces, r);
+  finish_validation(p, r, achieved, tolerances(p, r.scatter, averaged));
   r.iterations = 1;
   if (!r.within_uncertainty)
-    r.warnings.push_back("the validation run misses the measurement by " + fmt(normalised_misfit(p, r.achieved)) +
-                         " standard uncertainties: the surface is not accurate enough near the solution; use "
+    r.warnings.push_back("the validation " + std::string(averaged > 1 ? "(mean of " + std::to_string(averaged) +
+                                                                           " realisations) "
+                                                                     : "run ") +
+                         "misses the measurement by " + fmt(normalised_misfit(p, r.achieved, r.tolerance)) +
+                         " tolerances: the surface is not accurate enough near the solution; use "
                          "--mode sequential or add design points near the solution");
   return r;
 }
 
 CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& model, const LoopOptions& opt) {
   validate_problem(p, true);
+  require_replicate_model(p, opt);
   CalibrationResult r;
   r.mode = "sequential";
   const std::size_t n = p.parameters.size();
@@ -354,22 +436,30 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
     for (auto& x : start) x = round_point(x);
   }
   const std::vector<Eigen::VectorXd> ys = evaluate_batch(model, start, opt.jobs);
+  std::vector<std::size_t> pool;  // runs that take part in the search (not the replicates)
   for (std::size_t k = 0; k < start.size(); ++k) {
     r.runs.push_back({start[k], ys[k], "design", 0});
+    pool.push_back(k);
     if (opt.on_run) opt.on_run(r.runs.back());
   }
-  auto misfit = [&](std::size_t k) { return normalised_misfit(p, r.runs[k].y); };
-  std::size_t best = 0;
-  for (std::size_t k = 1; k < r.runs.size(); ++k)
+  // Know the noise before chasing it: the scatter at the first start point sets what a
+  // single run counts as a hit.
+  if (p.replicates > 0) {
+    measure_scatter(p, opt, start[0], ys[0], 0, r);
+    scatter_warnings(p, r);
+  }
+  const Eigen::VectorXd tolerance = tolerances(p, r.scatter, 1);
+  auto misfit = [&](std::size_t k) { return normalised_misfit(p, r.runs[k].y, tolerance); };
+  std::size_t best = pool[0];
+  for (std::size_t k : pool)
     if (misfit(k) < misfit(best)) best = k;
   double radius = 0.5;  // trust-region half width in scaled units (1 = half the range)
   const std::size_t neighbours = n + 2;  // plane (n + 1 terms) with one residual degree of freedom
   int iteration = 0;
-  while (misfit(best) > 1.0 && static_cast<int>(r.runs.size()) < p.max_runs) {
+  while (misfit(best) > 1.0 && static_cast<int>(pool.size()) < p.max_runs) {
     ++iteration;
     // The points nearest the current best (scaled distance); more if they do not determine a plane.
-    std::vector<std::size_t> order(r.runs.size());
-    std::iota(order.begin(), order.end(), 0);
+    std::vector<std::size_t> order = pool;
     const Eigen::VectorXd ub = sc.to_unit(r.runs[best].x);
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
       return (sc.to_unit(r.runs[a].x) - ub).norm() < (sc.to_unit(r.runs[b].x) - ub).norm();
@@ -405,6 +495,7 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
     r.runs.push_back({x, model(x), "refinement", iteration});
     if (opt.on_run) opt.on_run(r.runs.back());
     const std::size_t k = r.runs.size() - 1;
+    pool.push_back(k);
     if (misfit(k) < misfit(best)) {
       best = k;
       radius = std::min(2.0 * radius, 2.0);
@@ -415,14 +506,12 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
   r.iterations = iteration;
   r.solution = r.runs[best].x;
   if (r.surfaces.empty()) {  // converged on the start design: fit it for the uncertainty
-    std::vector<std::size_t> idx(r.runs.size());
-    std::iota(idx.begin(), idx.end(), 0);
-    r.surfaces = fit_surfaces(p, r.runs, idx, SurfaceKind::kPlane);
-    r.surface_points = idx;
+    r.surfaces = fit_surfaces(p, r.runs, pool, SurfaceKind::kPlane);
+    r.surface_points = pool;
   }
   r.runs[best].role = r.runs[best].role == "design" ? "design+validation" : "validation";
   propagate_uncertainty(p, r.surfaces, r);
-  finish_validation(p, r, r.runs[best].y);
+  finish_validation(p, r, r.runs[best].y, tolerance);
   if (!r.within_uncertainty) {
     // Is the target reachable at all inside the bounds (judged on the last local surfaces)?
     try {
@@ -430,9 +519,11 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
     } catch (const CalibrationError& e) {
       r.warnings.push_back(std::string("judged on the last local planes: ") + e.what());
     }
-    r.warnings.push_back("stopped after " + std::to_string(r.runs.size()) + " runs (sequential.max_runs = " +
-                         std::to_string(p.max_runs) + ") with the best run " + fmt(normalised_misfit(p, r.achieved)) +
-                         " standard uncertainties from the measurement: raise sequential.max_runs");
+    r.warnings.push_back("stopped after " + std::to_string(pool.size()) + " runs (sequential.max_runs = " +
+                         std::to_string(p.max_runs) + ") with the best run " + fmt(normalised_misfit(p, r.achieved, tolerance)) +
+                         (r.scatter.size() ? " tolerances (measurement uncertainty and realisation scatter)"
+                                           : " standard uncertainties") +
+                         " from the measurement: raise sequential.max_runs");
   }
   return r;
 }

@@ -12,10 +12,21 @@
 //    within its measurement uncertainty or the run budget is spent. r doubles after an
 //    improvement and halves otherwise.
 //
+// Realisation scatter (Problem::replicates = R > 0). A DEM target at fixed parameters is
+// one draw from the packings its seed can make (chaotic: any parameter change is a new
+// draw too), with standard deviation s_i. The loop measures s_i from R + 1 realisations
+// (seeds seed, seed + 1, .., seed + R) at one point: in paper mode at the solution, whose
+// validation then uses the mean of the realisations, judged against sqrt(u_i^2 + s_i^2 /
+// (R + 1)); in sequential mode at the first start point (the centre), before refining,
+// so that a single run counts as a hit when |y_i - t_i| <= sqrt(u_i^2 + s_i^2) instead of
+// chasing the scatter. Without it (R = 0) the scatter is unknown and taken as zero.
+//
 // Parameter uncertainty (first order): dx = G dy with G = (J^T W J)^-1 J^T W, J = dsurface/dx
 // at the solution, W = diag(1 / sigma_t^2), so cov(x) = G (S_t + S_s) G^T with
 // S_t = diag(sigma_target^2) (measurement) and S_s = diag(s_residual^2) (surface error).
-// For as many targets as parameters G = J^-1.
+// For as many targets as parameters G = J^-1. With a measured scatter s the design's single
+// realisation carries an offset of std s_i per target, so cov(x) gains G diag(s^2) G^T and
+// W = diag(1 / (sigma_t^2 + s^2)).
 #pragma once
 #include <Eigen/Dense>
 #include <functional>
@@ -48,6 +59,7 @@ struct Problem {
   std::vector<Eigen::VectorXd> sequential_start;  // sequential mode: empty = centre + one step per parameter
   SurfaceKind surface = SurfaceKind::kAuto;
   int max_runs = 12;                              // sequential mode budget (design + refinement runs)
+  int replicates = 0;                             // extra realisations (seeds) to measure the scatter; 0 = off
   Eigen::VectorXd lower() const;
   Eigen::VectorXd upper() const;
 };
@@ -55,6 +67,8 @@ struct Problem {
 // The forward model: parameters (SI) -> targets (SI). Must be callable from several threads
 // at once (the DEM model is; the identity model is pure).
 using ForwardModel = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
+// The same model in realisation k >= 1 (the DEM: seed + k); realisation 0 is ForwardModel.
+using ReplicateModel = std::function<Eigen::VectorXd(const Eigen::VectorXd&, int)>;
 
 // A target the surfaces cannot reach inside the bounds, or a design that cannot be fitted.
 // `key` names what to change (the target or the design).
@@ -69,8 +83,9 @@ class CalibrationError : public std::runtime_error {
 
 struct Run {
   Eigen::VectorXd x, y;
-  std::string role;   // "design" | "refinement" | "validation"
+  std::string role;   // "design" | "refinement" | "validation" | "replicate"
   int iteration = 0;
+  int replicate = 0;  // realisation (0: the model's own seed)
 };
 
 struct CalibrationResult {
@@ -78,12 +93,18 @@ struct CalibrationResult {
   Eigen::VectorXd solution;             // parameters (SI)
   Eigen::VectorXd sigma_target;         // parameter std from the measurement uncertainty
   Eigen::VectorXd sigma_surface;        // parameter std from the surfaces' residual error
+  Eigen::VectorXd sigma_scatter;        // parameter std from the realisation scatter (0 when not measured)
   Eigen::VectorXd sigma;                // combined
   Eigen::MatrixXd jacobian;             // d surface / d x at the solution (targets x parameters)
   Eigen::VectorXd predicted;            // surfaces at the solution
-  Eigen::VectorXd achieved;             // the validation run at the solution
+  Eigen::VectorXd achieved;             // the validation at the solution (paper mode with replicates: their mean)
   Eigen::VectorXd error;                // achieved - measured
-  bool within_uncertainty = false;      // |error_i| <= uncertainty_i for all i
+  Eigen::VectorXd tolerance;            // what |error_i| was judged against (uncertainty, with scatter if measured)
+  bool within_uncertainty = false;      // |error_i| <= tolerance_i for all i
+  // Realisation scatter (Problem::replicates > 0): per-target sample std over the
+  // realisations at scatter_at; empty when not measured.
+  Eigen::VectorXd scatter;
+  Eigen::VectorXd scatter_at;
   std::vector<Run> runs;                // every forward evaluation, in order
   std::vector<ResponseSurface> surfaces;  // the surfaces used for the final solution
   std::vector<std::size_t> surface_points;  // indices into runs the final surfaces were fitted on
@@ -96,6 +117,8 @@ struct LoopOptions {
   int jobs = 1;  // concurrent evaluations of a batch of design points
   // Called after each evaluation (progress / logging); may be empty.
   std::function<void(const Run&)> on_run;
+  // Required when Problem::replicates > 0.
+  ReplicateModel replicate_model;
 };
 
 // Evaluates every point, up to `jobs` at once; results in input order.
@@ -117,5 +140,9 @@ CalibrationResult calibrate_sequential(const Problem& problem, const ForwardMode
 
 // Weighted misfit max_i |y_i - t_i| / sigma_i (<= 1: within the measurement uncertainty).
 double normalised_misfit(const Problem& problem, const Eigen::VectorXd& y);
+// Same against a tolerance per target.
+double normalised_misfit(const Problem& problem, const Eigen::VectorXd& y, const Eigen::VectorXd& tolerance);
+// Per-target sample standard deviation (n - 1) of realisations (rows: realisations).
+Eigen::VectorXd realisation_scatter(const std::vector<Eigen::VectorXd>& realisations);
 
 }  // namespace colza::calibration

@@ -44,17 +44,24 @@ DemModel::DemModel(const Spec& spec, fs::path runs_dir, bool verbose)
   fs::create_directories(runs_);
 }
 
-std::string DemModel::shared_packing_path() {
-  // Settled once at the centre of the design range, kept in runs/packing-<fp>/packing.txt.
+std::vector<std::string> DemModel::seed_override(int replicate) const {
+  if (replicate == 0) return {};
+  return {"seed=" + std::to_string(spec_.base.seed + static_cast<std::uint64_t>(replicate))};
+}
+
+std::pair<std::string, std::string> DemModel::shared_packing(int replicate) {
+  // Settled once at the centre of the design range (per realisation), kept in
+  // runs/packing-<fp>/packing.txt.
   std::lock_guard<std::mutex> lock(sample_mutex_);
-  if (!packing_path_.empty()) return packing_path_;
+  if (auto it = packings_.find(replicate); it != packings_.end()) return it->second;
   std::vector<std::string> o = spec_.model_set;
   const Eigen::VectorXd mid = 0.5 * (spec_.problem.lower() + spec_.problem.upper());
   for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j)
     o.push_back(spec_.problem.parameters[j].key + "=" + num17(mid[j]));
+  for (const auto& s : seed_override(replicate)) o.push_back(s);
   const RunConfig c = load_run_config(Scenario::kOedometer, spec_.model_config, o);
-  packing_fp_ = fingerprint_text(c.resolved_toml);
-  const fs::path dir = runs_ / ("packing-" + packing_fp_);
+  const std::string fp = fingerprint_text(c.resolved_toml);
+  const fs::path dir = runs_ / ("packing-" + fp);
   const fs::path file = dir / "packing.txt";
   if (!fs::exists(file)) {
     fs::create_directories(dir);
@@ -65,15 +72,18 @@ std::string DemModel::shared_packing_path() {
     fs::rename(dir / "packing.txt.tmp", file);
     write_text_atomically(dir / "config.toml", c.resolved_toml);
     if (verbose_)
-      std::printf("  shared packing: %zu particles settled at the design centre (%.1f s) -> %s\n", r.particles,
+      std::printf("  shared packing (seed %llu): %zu particles settled at the design centre (%.1f s) -> %s\n",
+                  static_cast<unsigned long long>(c.seed), r.particles,
                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), file.c_str());
   }
-  packing_path_ = file.string();
-  packing_note_ = "every run loads the packing settled once at the design centre: " + packing_path_;
-  return packing_path_;
+  packings_[replicate] = {file.string(), fp};
+  if (replicate == 0)
+    packing_note_ = "every run loads the packing settled once at the design centre: " + file.string() +
+                    (spec_.problem.replicates > 0 ? " (replicates: one such packing per seed)" : "");
+  return packings_[replicate];
 }
 
-RunConfig DemModel::config_for(const Eigen::VectorXd& x, std::string& fp) {
+RunConfig DemModel::config_for(const Eigen::VectorXd& x, int replicate, std::string& fp) {
   std::vector<std::string> o = spec_.model_set;
   if (spec_.stage == Stage::kShear) {
     std::string loads = "shear_box.normal_stresses=[";
@@ -82,11 +92,13 @@ RunConfig DemModel::config_for(const Eigen::VectorXd& x, std::string& fp) {
   }
   for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j)
     o.push_back(spec_.problem.parameters[j].key + "=" + num17(x[j]));
+  for (const auto& s : seed_override(replicate)) o.push_back(s);
   RunConfig c = load_run_config(scenario_of(spec_), spec_.model_config, o);
   std::string text = c.resolved_toml;
   if (spec_.shared_packing) {
-    c.oedometer.packing_file = shared_packing_path();
-    text += "\n# shared packing " + packing_fp_ + "\n";
+    const auto [path, packing_fp] = shared_packing(replicate);
+    c.oedometer.packing_file = path;
+    text += "\n# shared packing " + packing_fp + "\n";
   }
   fp = fingerprint_text(text);
   return c;
@@ -185,14 +197,15 @@ Eigen::VectorXd DemModel::targets_from(const nlohmann::json& out, const std::str
   return y;
 }
 
-Eigen::VectorXd DemModel::operator()(const Eigen::VectorXd& x) {
+Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
   std::string fp;
-  const RunConfig c = config_for(x, fp);
+  const RunConfig c = config_for(x, replicate, fp);
   const fs::path dir = runs_ / fp;
   const fs::path summary = dir / "summary.json";
   DemRunRecord rec;
   rec.id = fp;
   rec.x = x;
+  rec.replicate = replicate;
   if (fs::exists(summary)) {
     const auto s = nlohmann::json::parse(std::ifstream(summary));
     if (s.value("fingerprint", "") == fp) {
@@ -242,6 +255,7 @@ Eigen::VectorXd DemModel::operator()(const Eigen::VectorXd& x) {
       std::snprintf(b, sizeof b, " %s = %.5g", spec_.problem.parameters[j].name.c_str(), x[j]);
       line += b;
     }
+    if (replicate > 0) line += " (seed " + std::to_string(c.seed) + ")";
     line += " ->";
     for (std::size_t i = 0; i < spec_.problem.targets.size(); ++i) {
       char b[96];
@@ -264,10 +278,10 @@ std::vector<DemRunRecord> DemModel::records() const {
   return records_;
 }
 
-const DemRunRecord* DemModel::find(const Eigen::VectorXd& x) const {
+const DemRunRecord* DemModel::find(const Eigen::VectorXd& x, int replicate) const {
   std::lock_guard<std::mutex> lock(mutex_);
   for (const auto& r : records_)
-    if (r.x.size() == x.size() && (r.x - x).norm() == 0.0) return &r;
+    if (r.replicate == replicate && r.x.size() == x.size() && (r.x - x).norm() == 0.0) return &r;
   return nullptr;
 }
 

@@ -4,6 +4,8 @@
 // Every run is kept in <runs>/<fingerprint>/summary.json, the fingerprint being FNV-1a 64
 // of the run's full configuration as used (model config + spec overrides + parameters +
 // shared packing); a calibration started again reuses finished runs. Thread-safe.
+// Realisation k >= 1 of a point (realisation scatter, calibrate.hpp) is the same run with
+// seed = config seed + k: its own sample (shear), its own shared packing (compression).
 #pragma once
 #include <Eigen/Dense>
 #include <filesystem>
@@ -22,6 +24,7 @@ namespace colza::calibration {
 struct DemRunRecord {
   std::string id;           // fingerprint = directory name under runs/
   Eigen::VectorXd x, y;
+  int replicate = 0;        // realisation: seed = config seed + replicate
   bool reused = false;
   double wall_seconds = 0;  // of the original run
   nlohmann::json outputs;
@@ -30,27 +33,33 @@ struct DemRunRecord {
 class DemModel {
  public:
   DemModel(const Spec& spec, std::filesystem::path runs_dir, bool verbose);
-  Eigen::VectorXd operator()(const Eigen::VectorXd& x);
+  Eigen::VectorXd operator()(const Eigen::VectorXd& x) { return run(x, 0); }
+  Eigen::VectorXd run(const Eigen::VectorXd& x, int replicate);
   std::vector<DemRunRecord> records() const;
-  const DemRunRecord* find(const Eigen::VectorXd& x) const;
-  std::string shared_packing_note() const { return packing_note_; }
+  const DemRunRecord* find(const Eigen::VectorXd& x, int replicate) const;
+  std::string shared_packing_note() const {
+    std::lock_guard<std::mutex> lock(sample_mutex_);
+    return packing_note_;
+  }
 
  private:
-  RunConfig config_for(const Eigen::VectorXd& x, std::string& fingerprint);
+  RunConfig config_for(const Eigen::VectorXd& x, int replicate, std::string& fingerprint);
+  std::vector<std::string> seed_override(int replicate) const;
   nlohmann::json run_oedometer_outputs(const RunConfig& c, const std::filesystem::path& dir, double& wall);
   nlohmann::json run_shear_outputs(const RunConfig& c, double& wall);
   std::shared_ptr<const ShearSample> shear_sample(const RunConfig& c);
-  std::string shared_packing_path();
+  std::pair<std::string, std::string> shared_packing(int replicate);  // (path, fingerprint)
   Eigen::VectorXd targets_from(const nlohmann::json& outputs, const std::string& id) const;
 
   const Spec& spec_;
   std::filesystem::path runs_;
   bool verbose_;
   mutable std::mutex mutex_;           // records_
-  std::mutex sample_mutex_;            // shared samples / packings are made once
+  mutable std::mutex sample_mutex_;    // shared samples / packings are made once
   std::vector<DemRunRecord> records_;
   std::map<std::string, std::shared_ptr<const ShearSample>> samples_;
-  std::string packing_path_, packing_fp_, packing_note_;
+  std::map<int, std::pair<std::string, std::string>> packings_;  // replicate -> (path, fingerprint)
+  std::string packing_note_;
 };
 
 }  // namespace colza::calibration

@@ -32,6 +32,7 @@ nlohmann::json calibration_summary(const Problem& p, const CalibrationResult& r,
                                {"uncertainty", finite_or_null(r.sigma[j])},
                                {"uncertainty_from_targets", finite_or_null(r.sigma_target[j])},
                                {"uncertainty_from_surface", finite_or_null(r.sigma_surface[j])},
+                               {"uncertainty_from_scatter", finite_or_null(r.sigma_scatter[j])},
                                {"bounds", {p.parameters[j].lower, p.parameters[j].upper}}});
   s["targets"] = nlohmann::json::array();
   for (std::size_t i = 0; i < p.targets.size(); ++i)
@@ -43,8 +44,21 @@ nlohmann::json calibration_summary(const Problem& p, const CalibrationResult& r,
                             {"achieved", r.achieved[i]},
                             {"error", r.error[i]},
                             {"relative_error", p.targets[i].value != 0.0 ? r.error[i] / std::abs(p.targets[i].value) : 0.0},
-                            {"error_in_uncertainties", r.error[i] / p.targets[i].uncertainty}});
+                            {"error_in_uncertainties", r.error[i] / p.targets[i].uncertainty},
+                            {"tolerance", r.tolerance[i]}});
   s["within_uncertainty"] = r.within_uncertainty;
+  if (r.scatter.size()) {
+    nlohmann::json sc = {{"replicates", p.replicates},
+                         {"realisations", p.replicates + 1},
+                         {"at", std::vector<double>(r.scatter_at.data(), r.scatter_at.data() + r.scatter_at.size())},
+                         {"where", r.mode == "paper" ? "the solution (validation averaged over the realisations)"
+                                                     : "the first start point (before refining)"}};
+    sc["targets"] = nlohmann::json::array();
+    for (std::size_t i = 0; i < p.targets.size(); ++i)
+      sc["targets"].push_back({{"name", p.targets[i].name}, {"std", r.scatter[i]},
+                               {"std_over_uncertainty", r.scatter[i] / p.targets[i].uncertainty}});
+    s["scatter"] = sc;
+  }
   s["surfaces"] = nlohmann::json::array();
   std::vector<std::string> names;
   for (const auto& par : p.parameters) names.push_back(par.name);
@@ -75,7 +89,7 @@ nlohmann::json calibration_summary(const Problem& p, const CalibrationResult& r,
   s["runs"] = nlohmann::json::array();
   std::size_t reused = 0;
   for (std::size_t k = 0; k < r.runs.size(); ++k) {
-    nlohmann::json j = {{"role", r.runs[k].role}, {"iteration", r.runs[k].iteration},
+    nlohmann::json j = {{"role", r.runs[k].role}, {"iteration", r.runs[k].iteration}, {"replicate", r.runs[k].replicate},
                         {"parameters", std::vector<double>(r.runs[k].x.data(), r.runs[k].x.data() + r.runs[k].x.size())},
                         {"targets", std::vector<double>(r.runs[k].y.data(), r.runs[k].y.data() + r.runs[k].y.size())}};
     if (k < ctx.run_ids.size()) {
@@ -108,7 +122,9 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
   if (!ctx.notes.empty()) o << ctx.notes << "\n\n";
   if (!ctx.measured_section.empty()) o << ctx.measured_section << "\n";
   o << "Forward runs used: **" << r.runs.size() << "**";
-  if (ctx.paper_design_runs) o << " (the paper's design on the same targets: " << ctx.paper_design_runs << " = design points + 1 validation)";
+  if (ctx.paper_design_runs)
+    o << " (the paper's design on the same targets: " << ctx.paper_design_runs << " = design points + 1 validation"
+      << (p.replicates ? " + " + std::to_string(p.replicates) + " replicates" : std::string()) << ")";
   o << "; wall time " << g(ctx.wall_seconds, 4) << " s.\n\n";
 
   o << "## Design and runs\n\n| # | role | ";
@@ -119,7 +135,7 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
   o << "\n";
   for (std::size_t k = 0; k < r.runs.size(); ++k) {
     o << "| " << k + 1 << " | " << r.runs[k].role << (r.runs[k].iteration ? " " + std::to_string(r.runs[k].iteration) : "")
-      << " | ";
+      << (r.runs[k].replicate ? " (seed +" + std::to_string(r.runs[k].replicate) + ")" : std::string()) << " | ";
     for (Eigen::Index j = 0; j < r.runs[k].x.size(); ++j) o << g(r.runs[k].x[j]) << " | ";
     for (Eigen::Index i = 0; i < r.runs[k].y.size(); ++i) o << g(r.runs[k].y[i]) << " | ";
     o << g(normalised_misfit(p, r.runs[k].y), 3) << " | ";
@@ -148,23 +164,42 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
     o << "\n";
   }
 
-  o << "\n## Solution\n\n| parameter | value | uncertainty (1 sigma) | from targets | from surface | bounds |\n|---|---|---|---|---|---|\n";
+  if (r.scatter.size()) {
+    o << "\n## Realisation scatter\n\nThe same parameters with " << p.replicates + 1 << " seeds (seed, seed + 1, ..) at "
+      << (r.mode == "paper" ? "the solution" : "the first start point") << ": every run is one realisation of the "
+      << "packing, so a target scatters around its mean even at fixed parameters.\n\n"
+      << "| target | std over seeds | measurement uncertainty | std / uncertainty | tolerance used |\n|---|---|---|---|---|\n";
+    for (std::size_t i = 0; i < p.targets.size(); ++i)
+      o << "| " << p.targets[i].name << " (" << p.targets[i].unit << ") | " << g(r.scatter[i], 3) << " | "
+        << g(p.targets[i].uncertainty, 3) << " | " << g(r.scatter[i] / p.targets[i].uncertainty, 3) << " | "
+        << g(r.tolerance[i], 3) << " |\n";
+    o << "\nTolerance: sqrt(u^2 + s^2 / n) for the mean of n realisations (paper mode: the validation's n = "
+      << p.replicates + 1 << "; sequential mode: a single run, n = 1).\n";
+  }
+  o << "\n## Solution\n\n| parameter | value | uncertainty (1 sigma) | from targets | from surface | from scatter | bounds "
+       "|\n|---|---|---|---|---|---|---|\n";
   for (std::size_t j = 0; j < p.parameters.size(); ++j)
     o << "| " << p.parameters[j].name << " (`" << p.parameters[j].key << "`, " << p.parameters[j].unit << ") | "
       << g(r.solution[j]) << " | " << g(r.sigma[j], 3) << " | " << g(r.sigma_target[j], 3) << " | "
-      << g(r.sigma_surface[j], 3) << " | " << g(p.parameters[j].lower) << " .. " << g(p.parameters[j].upper) << " |\n";
+      << g(r.sigma_surface[j], 3) << " | " << (r.scatter.size() ? g(r.sigma_scatter[j], 3) : std::string("not measured"))
+      << " | " << g(p.parameters[j].lower) << " .. " << g(p.parameters[j].upper) << " |\n";
   o << "\nUncertainty: first order, dx = G dy with G = (J^T W J)^-1 J^T W (= J^-1 for as many targets as "
-       "parameters), J the surfaces' Jacobian at the solution; target uncertainty and the surfaces' residual "
-       "standard error are propagated separately and combined in quadrature.\n";
+       "parameters), J the surfaces' Jacobian at the solution; target uncertainty, the surfaces' residual "
+       "standard error and (when measured) the realisation scatter of the design's one seed are propagated "
+       "separately and combined in quadrature.\n";
 
-  o << "\n## Validation against the measured data\n\n| target | measured | surface at solution | DEM at solution | error | error / uncertainty |\n|---|---|---|---|---|---|\n";
+  const bool mean = r.scatter.size() && r.mode == "paper";
+  o << "\n## Validation against the measured data\n\n| target | measured | surface at solution | DEM at solution"
+    << (mean ? " (mean of " + std::to_string(p.replicates + 1) + " seeds)" : std::string())
+    << " | error | error / uncertainty | error / tolerance |\n|---|---|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < p.targets.size(); ++i)
     o << "| " << p.targets[i].name << " (" << p.targets[i].unit << ") | " << g(p.targets[i].value) << " +/- "
       << g(p.targets[i].uncertainty, 3) << " | " << g(r.predicted[i]) << " | " << g(r.achieved[i]) << " | "
       << g(r.error[i], 3) << " (" << g(100.0 * r.error[i] / std::abs(p.targets[i].value), 3) << " %) | "
-      << g(r.error[i] / p.targets[i].uncertainty, 3) << " |\n";
+      << g(r.error[i] / p.targets[i].uncertainty, 3) << " | " << g(r.error[i] / r.tolerance[i], 3) << " |\n";
   o << "\nValidation " << (r.within_uncertainty ? "**within**" : "**NOT within**")
-    << " the measurement uncertainty.\n";
+    << (r.scatter.size() ? " the tolerance (measurement uncertainty combined with the realisation scatter).\n"
+                         : " the measurement uncertainty.\n");
   std::vector<std::string> w = ctx.extra_warnings;
   w.insert(w.end(), r.warnings.begin(), r.warnings.end());
   if (!w.empty()) {

@@ -56,6 +56,14 @@ struct Node {
     fail(k, "must be a number");
   }
   double number(const std::string& k, double fallback) const { return has(k) ? number(k) : (get(k), fallback); }
+  long long integer(const std::string& k, long long fallback, long long lo, long long hi) const {
+    const toml::node* n = get(k);
+    if (!n) return fallback;
+    if (!n->is_integer()) fail(k, "must be a whole number");
+    const long long v = n->as_integer()->get();
+    if (v < lo || v > hi) fail(k, "must be between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got " + std::to_string(v));
+    return v;
+  }
   double positive(const std::string& k) const {
     const double v = number(k);
     if (!(v > 0.0)) fail(k, "must be > 0, got " + fmt(v));
@@ -238,6 +246,10 @@ Spec read_spec(const std::string& path) {
       seq.fail("start", "needs at least " + std::to_string(np + 1) + " points to determine a plane");
   }
   seq.reject_unknown();
+  // Realisation scatter: the same point with other seeds (calibrate.hpp).
+  const Node scatter = root.child("scatter");
+  p.replicates = static_cast<int>(scatter.integer("replicates", 0, 0, 50));
+  scatter.reject_unknown();
 
   // --- measured data -> targets ------------------------------------------------------
   const Node m = root.child("measured");

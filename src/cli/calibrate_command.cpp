@@ -81,6 +81,7 @@ int calibrate_command(const CalibrateOptions& opt) {
   const ForwardModel model = [&dem](const Eigen::VectorXd& x) { return dem(x); };
   LoopOptions loop;
   loop.jobs = opt.jobs;
+  loop.replicate_model = [&dem](const Eigen::VectorXd& x, int replicate) { return dem.run(x, replicate); };
   CalibrationResult result;
   if (const int code = input_errors_to_exit_code(opt, spec, [&] {
         result = opt.mode == "sequential" ? calibrate_sequential(spec.problem, model, loop)
@@ -93,7 +94,7 @@ int calibrate_command(const CalibrateOptions& opt) {
   ctx.spec_file = opt.spec_path;
   ctx.title = spec.title;
   ctx.measured_file = spec.measured_file;
-  ctx.paper_design_runs = spec.problem.design.size() + 1;
+  ctx.paper_design_runs = spec.problem.design.size() + 1 + static_cast<std::size_t>(spec.problem.replicates);
   ctx.extra_warnings = spec.warnings;
   if (spec.shared_packing) ctx.notes = "Packing: " + dem.shared_packing_note() + ".";
   if (spec.stage == Stage::kShear) {
@@ -105,7 +106,7 @@ int calibrate_command(const CalibrateOptions& opt) {
   ctx.measured = measured_data_summary(spec);
   ctx.measured_section = measured_data_section(spec);
   for (const auto& run : result.runs) {
-    const DemRunRecord* rec = dem.find(run.x);
+    const DemRunRecord* rec = dem.find(run.x, run.replicate);
     ctx.run_ids.push_back(rec ? rec->id : "");
     ctx.run_reused.push_back(rec ? rec->reused : false);
     ctx.run_wall_seconds.push_back(rec ? rec->wall_seconds : 0.0);
@@ -125,10 +126,14 @@ int calibrate_command(const CalibrateOptions& opt) {
   for (std::size_t j = 0; j < spec.problem.parameters.size(); ++j)
     std::printf("  %s = %.6g +/- %.3g %s\n", spec.problem.parameters[j].name.c_str(), result.solution[j], result.sigma[j],
                 spec.problem.parameters[j].unit.c_str());
-  for (std::size_t i = 0; i < spec.problem.targets.size(); ++i)
-    std::printf("  %s: measured %.6g +/- %.3g, validation %.6g (error %+.3g, %.2f sigma)\n",
+  for (std::size_t i = 0; i < spec.problem.targets.size(); ++i) {
+    std::printf("  %s: measured %.6g +/- %.3g, validation %.6g (error %+.3g, %.2f sigma)",
                 spec.problem.targets[i].name.c_str(), spec.problem.targets[i].value, spec.problem.targets[i].uncertainty,
                 result.achieved[i], result.error[i], result.error[i] / spec.problem.targets[i].uncertainty);
+    if (result.scatter.size())
+      std::printf("; realisation scatter %.3g, judged against %.3g", result.scatter[i], result.tolerance[i]);
+    std::printf("\n");
+  }
   for (const auto& w : result.warnings) std::fprintf(stderr, "colza: warning: %s\n", w.c_str());
   return 0;
 }

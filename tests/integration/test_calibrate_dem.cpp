@@ -12,6 +12,8 @@
 // Density: each run settles (~5 s); 2 design points + validation.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <cmath>
 
 #include "cli_runner.hpp"
@@ -156,6 +158,50 @@ TEST(CalibrateDensity, RecoversTheParticleDensityBothModes) {
     EXPECT_NEAR(s["parameters"][0]["value"].get<double>(), 1260.0, 0.04 * 1260.0) << mode << s.dump(1);
     EXPECT_LE(std::abs(s["targets"][0]["error"].get<double>()), 0.02 * rho_b) << mode;
   }
+}
+
+TEST(CalibrateDensity, ReplicatesMeasureTheScatterOverSeeds) {
+  // [scatter] replicates = 2: the validation point again with the config's seed + 1 and + 2,
+  // each settling its own sample; the scatter is their sample std and widens the tolerance.
+  const fs::path dir = scratch_dir("calibrate-density-scatter");
+  fs::create_directories(dir);
+  write_file(dir / "spec.toml", "stage = \"density\"\n[model]\nconfig = \"" + kOed +
+                               "\"\nset = [\"oedometer.stop_force=100.0\", \"oedometer.fit_force_max=90.0\"]\n"
+                               "[[parameters]]\nname = \"rho_p\"\nkey = \"particle.density\"\nunit = \"kg/m^3\"\n"
+                               "design = [1200.0, 1300.0]\n[scatter]\nreplicates = 2\n"
+                               "[measured]\nbulk_density = 560.0\nbulk_density_uncertainty = 1.0\n");
+  const CliResult r = run_colza("calibrate density --quiet --jobs 2 --spec " + (dir / "spec.toml").string() + " --out " +
+                                (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const auto s = read_json(dir / "out" / "summary.json");
+  ASSERT_TRUE(s.contains("scatter")) << s.dump(1);
+  EXPECT_EQ(s["scatter"]["replicates"].get<int>(), 2);
+  EXPECT_EQ(s["runs_used"].get<int>(), 2 + 1 + 2);
+  std::vector<double> at_solution;
+  std::set<std::string> ids;
+  auto seed_of = [&](const nlohmann::json& run) {
+    const std::string config = read_json(dir / "out" / run["summary"].get<std::string>())["config_toml"];
+    const std::size_t k = config.find("\nseed = ");
+    return k == std::string::npos ? -1 : std::stoi(config.substr(k + 8));
+  };
+  const int config_seed = seed_of(s["runs"][0]);
+  ASSERT_GT(config_seed, 0);
+  for (const auto& run : s["runs"]) {
+    ids.insert(run["id"].get<std::string>());
+    EXPECT_EQ(seed_of(run), config_seed + run["replicate"].get<int>()) << run.dump();
+    if (run["role"] == "design") continue;
+    at_solution.push_back(run["targets"][0].get<double>());
+  }
+  EXPECT_EQ(ids.size(), 5u);  // every realisation is a run of its own
+  ASSERT_EQ(at_solution.size(), 3u);
+  double mean = 0.0, var = 0.0;
+  for (double v : at_solution) mean += v / 3.0;
+  for (double v : at_solution) var += (v - mean) * (v - mean) / 2.0;
+  const double scatter = s["scatter"]["targets"][0]["std"].get<double>();
+  EXPECT_GT(scatter, 0.0);  // other seeds, other packings
+  EXPECT_NEAR(scatter, std::sqrt(var), 1e-9 * std::sqrt(var));
+  EXPECT_NEAR(s["targets"][0]["achieved"].get<double>(), mean, 1e-9 * mean);
+  EXPECT_NEAR(s["targets"][0]["tolerance"].get<double>(), std::sqrt(1.0 + var / 3.0), 1e-9);
 }
 
 TEST(CalibrateShearCurves, BadCurvesAreClearErrorsWithExitCode2) {
