@@ -2,7 +2,7 @@
 // section 6; YADE is the independent referee of colza's physics).
 //
 //   crosscheck micro|oedometer|shear|all [--size small|full] [--colza PATH] [--yade PATH]
-//              [--workdir DIR] [--source DIR] [--tolerances FILE] [--reuse]
+//              [--workdir DIR] [--source DIR] [--tolerances FILE] [--reuse] [--loads PA,PA,..]
 //
 //   micro      deterministic 2-3 body scenes (crosscheck/scenes/micro_*.toml) run by
 //              `colza run scene` and yade-scripts/run_scene.py; their time series must agree
@@ -21,6 +21,9 @@
 // --reuse: a run whose output directory in --workdir already holds summary.json (both codes
 // write it last) is not run again, so an interrupted full-size cross-check (hours of YADE)
 // continues where it stopped. Only for a workdir made from the same sources and configs.
+// --loads: the shear box runs these normal stresses (Pa) instead of [shear.<size>] loads, e.g.
+// two of the four full-size loads when the others are not finished (C and Phi are then those
+// of the line through the given loads; the table says so).
 //
 // Prints a table (metric, colza, YADE, difference, tolerance, PASS/FAIL) and both codes'
 // speed. Exit code: 0 all passed, 1 something failed, 2 bad usage or a run failed to
@@ -204,6 +207,7 @@ struct Options {
   fs::path colza, source, workdir, tolerances;
   std::string yade = "yade";
   bool reuse = false;
+  std::vector<double> loads;  // --loads: overrides [shear.<size>] loads
 };
 
 double tol_number(const toml::table& t, const std::string& path, double fallback) {
@@ -398,9 +402,14 @@ class Runner {
       report.fail(label, scene.string() + " has no [shear_box]");
       return;
     }
-    std::vector<double> loads;
-    if (const auto* a = t->at_path("loads").as_array())
+    std::vector<double> loads = opt_.loads;
+    if (!loads.empty()) {
+      std::string list;
+      for (double l : loads) list += (list.empty() ? "" : ", ") + fmt(1e-3 * l, "%.2f");
+      report.note(label + ": the loads given by --loads (" + list + " kPa), not those of [" + base + "]");
+    } else if (const auto* a = t->at_path("loads").as_array()) {
       for (const auto& n : *a) loads.push_back(n.value<double>().value_or(0.0));
+    }
     if (loads.empty()) {
       report.fail(label, "no loads in [" + base + "]");
       return;
@@ -741,7 +750,7 @@ int usage(const char* msg) {
   if (msg) std::fprintf(stderr, "crosscheck: %s\n", msg);
   std::fprintf(stderr,
                "usage: crosscheck micro|oedometer|shear|all [--size small|full] [--colza PATH] [--yade PATH]\n"
-               "                  [--workdir DIR] [--source DIR] [--tolerances FILE] [--reuse]\n");
+               "                  [--workdir DIR] [--source DIR] [--tolerances FILE] [--reuse] [--loads PA,PA,..]\n");
   return kExitUsage;
 }
 
@@ -769,6 +778,21 @@ int main(int argc, char** argv) {
       else if (a == "--source") opt.source = value();
       else if (a == "--tolerances") opt.tolerances = value();
       else if (a == "--reuse") opt.reuse = true;
+      else if (a == "--loads") {
+        std::stringstream list(value());
+        for (std::string item; std::getline(list, item, ',');) {
+          std::size_t used = 0;
+          double v = 0.0;
+          try {
+            v = std::stod(item, &used);
+          } catch (const std::exception&) {
+            used = 0;
+          }
+          if (used == 0 || used != item.size() || !(v > 0.0)) throw std::invalid_argument("--loads: \"" + item + "\" is not a normal stress > 0 (Pa)");
+          opt.loads.push_back(v);
+        }
+        if (opt.loads.empty()) throw std::invalid_argument("--loads needs at least one normal stress (Pa)");
+      }
       else if (a == "-h" || a == "--help") return usage(nullptr), 0;
       else if (!a.empty() && a[0] == '-') return usage(("unknown option " + a).c_str());
       else if (opt.what.empty()) opt.what = a;
