@@ -334,7 +334,8 @@ void Stepper::begin_step(World& world) {
 }
 
 void Stepper::finish_step(World& world) {
-  last_integration_ = integrate_step(world.particles, physics_.integrator, world.dt, worker_threads(), unbalanced_scratch_);
+  last_integration_ =
+      integrate_step(world.particles, physics_.integrator, world.dt, worker_threads(), unbalanced_scratch_, sums_);
   ledger_.damping_dissipated += last_integration_.damping_work;
   for (auto& wall : world.walls) wall.origin += world.dt * wall.velocity;
   world.time += world.dt;

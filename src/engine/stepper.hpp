@@ -50,6 +50,11 @@ class Stepper {
   const PhysicsSettings& physics() const { return physics_; }
   const PairTable& pairs() const { return pairs_; }
   const IntegrationReport& last_integration() const { return last_integration_; }
+  // The sums over particles the integration reports (integrate/integrator.hpp); all by
+  // default. A stage that reads neither the unbalanced force nor the damping energy turns
+  // them off; the motion is the same.
+  void set_integration_sums(IntegrationSums sums) { sums_ = sums; }
+  IntegrationSums integration_sums() const { return sums_; }
   const EnergyLedger& ledger() const { return ledger_; }
   const ContactEvents& events() const { return events_; }  // cumulative
   const NeighbourSearch& neighbours() const { return neighbours_; }
@@ -63,6 +68,7 @@ class Stepper {
   PairTable pairs_;
   NeighbourSearch neighbours_;
   IntegrationReport last_integration_;
+  IntegrationSums sums_;
   EnergyLedger ledger_;
   ContactEvents events_;
 

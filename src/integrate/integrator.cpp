@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -38,8 +39,9 @@ struct RangeReport {
 // (six damping terms per particle: x, rotation x, y, rotation y, z, rotation z), so one range
 // over all particles gives the same bits as that loop. With `unbalanced_out`, |load| of
 // particle i (0 for fixed ones) is stored there instead of being summed (the caller sums it
-// in particle order).
-template <DampingForm kForm>
+// in particle order). kUnbalanced / kWork: whether those sums are wanted (IntegrationSums);
+// the state update is the same either way.
+template <DampingForm kForm, bool kUnbalanced, bool kWork>
 void integrate_range(ParticleArrays& p, const IntegratorSettings& s, double dt, std::size_t begin,
                      std::size_t end, RangeReport& r, double* unbalanced_out) {
   constexpr std::size_t kBlock = 64;
@@ -85,16 +87,20 @@ void integrate_range(ParticleArrays& p, const IntegratorSettings& s, double dt, 
         position[3 * i + d] += dt * v_next;
       }
     }
+    if constexpr (!kUnbalanced && !kWork) continue;
     for (std::size_t k = 0; k < count; ++k) {  // particle order
       if (fixed[block + k]) {
-        if (unbalanced_out) unbalanced_out[block + k] = 0.0;
+        if (kUnbalanced && unbalanced_out) unbalanced_out[block + k] = 0.0;
         continue;
       }
-      if (unbalanced_out) unbalanced_out[block + k] = unbalanced[k];
-      else unbalanced_sum += unbalanced[k];
-      max_unbalanced = std::max(max_unbalanced, unbalanced[k]);
-      ++free_count;
-      for (int term = 0; term < 6; ++term) damping_work -= work[term][k];
+      if constexpr (kUnbalanced) {
+        if (unbalanced_out) unbalanced_out[block + k] = unbalanced[k];
+        else unbalanced_sum += unbalanced[k];
+        max_unbalanced = std::max(max_unbalanced, unbalanced[k]);
+        ++free_count;
+      }
+      if constexpr (kWork)
+        for (int term = 0; term < 6; ++term) damping_work -= work[term][k];
     }
   }
   r.free_count += free_count;
@@ -103,30 +109,51 @@ void integrate_range(ParticleArrays& p, const IntegratorSettings& s, double dt, 
   r.damping_work = damping_work;
 }
 
-void integrate_range(ParticleArrays& p, const IntegratorSettings& s, double dt, std::size_t begin,
-                     std::size_t end, RangeReport& r, double* unbalanced_out) {
-  if (s.damping_form == DampingForm::kPfc)
-    integrate_range<DampingForm::kPfc>(p, s, dt, begin, end, r, unbalanced_out);
+template <DampingForm kForm>
+void integrate_range(ParticleArrays& p, const IntegratorSettings& s, double dt, std::size_t begin, std::size_t end,
+                     RangeReport& r, double* unbalanced_out, IntegrationSums sums) {
+  if (sums.unbalanced && sums.damping_work)
+    integrate_range<kForm, true, true>(p, s, dt, begin, end, r, unbalanced_out);
+  else if (sums.unbalanced)
+    integrate_range<kForm, true, false>(p, s, dt, begin, end, r, unbalanced_out);
+  else if (sums.damping_work)
+    integrate_range<kForm, false, true>(p, s, dt, begin, end, r, unbalanced_out);
   else
-    integrate_range<DampingForm::kYade>(p, s, dt, begin, end, r, unbalanced_out);
+    integrate_range<kForm, false, false>(p, s, dt, begin, end, r, unbalanced_out);
+}
+
+void integrate_range(ParticleArrays& p, const IntegratorSettings& s, double dt, std::size_t begin,
+                     std::size_t end, RangeReport& r, double* unbalanced_out, IntegrationSums sums) {
+  if (s.damping_form == DampingForm::kPfc)
+    integrate_range<DampingForm::kPfc>(p, s, dt, begin, end, r, unbalanced_out, sums);
+  else
+    integrate_range<DampingForm::kYade>(p, s, dt, begin, end, r, unbalanced_out, sums);
+}
+
+// The sums a step did not compute are NaN.
+void mark_untracked(IntegrationReport& report, IntegrationSums sums) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (!sums.unbalanced) report.mean_unbalanced_force = report.max_unbalanced_force = nan;
+  if (!sums.damping_work) report.damping_work = nan;
 }
 
 }  // namespace
 
-IntegrationReport integrate_step(ParticleArrays& p, const IntegratorSettings& s, double dt) {
+IntegrationReport integrate_step(ParticleArrays& p, const IntegratorSettings& s, double dt, IntegrationSums sums) {
   IntegrationReport report;
   RangeReport r;
-  integrate_range(p, s, dt, 0, p.size(), r, nullptr);
+  integrate_range(p, s, dt, 0, p.size(), r, nullptr, sums);
   report.max_unbalanced_force = r.max_unbalanced;
   report.mean_unbalanced_force = r.free_count ? r.unbalanced_sum / r.free_count : 0.0;
   report.damping_work = r.damping_work;
+  mark_untracked(report, sums);
   return report;
 }
 
 IntegrationReport integrate_step(ParticleArrays& p, const IntegratorSettings& s, double dt, int threads,
-                                 std::vector<double>& unbalanced_scratch) {
+                                 std::vector<double>& unbalanced_scratch, IntegrationSums sums) {
   const std::size_t n = p.size();
-  if (threads <= 1 || n < kMinParticlesPerThread * 2) return integrate_step(p, s, dt);
+  if (threads <= 1 || n < kMinParticlesPerThread * 2) return integrate_step(p, s, dt, sums);
   unbalanced_scratch.resize(n);
   std::vector<RangeReport> parts(static_cast<std::size_t>(threads));
 #ifdef _OPENMP
@@ -135,11 +162,12 @@ IntegrationReport integrate_step(ParticleArrays& p, const IntegratorSettings& s,
     const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
     const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
     if (t < parts.size())
-      integrate_range(p, s, dt, n * t / nt, n * (t + 1) / nt, parts[t], unbalanced_scratch.data());
+      integrate_range(p, s, dt, n * t / nt, n * (t + 1) / nt, parts[t], unbalanced_scratch.data(), sums);
   }
 #else
   for (std::size_t t = 0; t < parts.size(); ++t)
-    integrate_range(p, s, dt, n * t / parts.size(), n * (t + 1) / parts.size(), parts[t], unbalanced_scratch.data());
+    integrate_range(p, s, dt, n * t / parts.size(), n * (t + 1) / parts.size(), parts[t], unbalanced_scratch.data(),
+                    sums);
 #endif
   IntegrationReport report;
   std::size_t free_count = 0;
@@ -152,9 +180,11 @@ IntegrationReport integrate_step(ParticleArrays& p, const IntegratorSettings& s,
   // The mean unbalanced force (settling criterion) is summed in particle order, as in the
   // serial loop, so it does not depend on the thread count (fixed particles add +0).
   double unbalanced_sum = 0.0;
-  for (std::size_t i = 0; i < n; ++i) unbalanced_sum += unbalanced_scratch[i];
+  if (sums.unbalanced)
+    for (std::size_t i = 0; i < n; ++i) unbalanced_sum += unbalanced_scratch[i];
   report.mean_unbalanced_force = free_count ? unbalanced_sum / free_count : 0.0;
   report.damping_work = damping_work;
+  mark_untracked(report, sums);
   return report;
 }
 

@@ -25,9 +25,20 @@ struct IntegrationReport {
   double damping_work = 0.0;  // energy removed by damping this step (J), >= 0
 };
 
+// Which sums over particles a step reports. Each is a serial chain over the particles
+// (in particle order, for bits that do not depend on the thread count): the damping work
+// is 6 additions per particle, about a tenth of a step on the oedometer, so stages that do
+// not read them switch them off. A sum not computed is reported as NaN (so is the ledger's
+// damping term from then on: a misuse shows). The motion does not depend on these flags.
+struct IntegrationSums {
+  bool unbalanced = true;    // mean and max unbalanced force (settling, scene stop condition)
+  bool damping_work = true;  // energy ledger (scenes)
+};
+
 // Advances all free particles by one step using the forces and torques in `particles`.
 // Fixed particles move with their prescribed velocity. Gravity is added here.
-IntegrationReport integrate_step(ParticleArrays& particles, const IntegratorSettings& settings, double dt);
+IntegrationReport integrate_step(ParticleArrays& particles, const IntegratorSettings& settings, double dt,
+                                 IntegrationSums sums = {});
 
 // Same with `threads` OpenMP threads over fixed contiguous particle ranges. Particle states
 // and the mean/max unbalanced force are bit-for-bit those of the serial call; the damping
@@ -36,6 +47,6 @@ IntegrationReport integrate_step(ParticleArrays& particles, const IntegratorSett
 // than 2 kMinParticlesPerThread particles) take the serial path.
 inline constexpr std::size_t kMinParticlesPerThread = 512;
 IntegrationReport integrate_step(ParticleArrays& particles, const IntegratorSettings& settings, double dt,
-                                 int threads, std::vector<double>& unbalanced_scratch);
+                                 int threads, std::vector<double>& unbalanced_scratch, IntegrationSums sums = {});
 
 }  // namespace colza

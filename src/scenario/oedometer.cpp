@@ -99,6 +99,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   r.dt_min = r.dt_max = world.dt;
   bool stop = false;
   std::uint64_t load_steps = 0;
+  stepper.set_integration_sums({.unbalanced = false, .damping_work = false});  // neither is read while loading
   while (!stop) {
     stepper.step(world, [&](const World& w) {
       const Wall& p = w.walls[piston_id];

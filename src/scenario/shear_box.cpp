@@ -142,6 +142,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
   };
 
   // --- consolidation under the servo ------------------------------------------------
+  stepper.set_integration_sums({.unbalanced = false, .damping_work = false});  // neither is read from here on
   StageClock consolidation_clock("consolidation");
   progress.start_stage("consolidation");
   const double t0 = world.time;
