@@ -80,18 +80,35 @@ std::vector<ResponseSurface> fit_surfaces(const Problem& p, const std::vector<Ru
   return s;
 }
 
-// What a target's error is judged against: the measurement uncertainty u_i, combined with
-// the realisation scatter s_i when it was measured, for the mean of `averaged` realisations:
-// sqrt(u_i^2 + s_i^2 / averaged).
-Eigen::VectorXd tolerances(const Problem& p, const Eigen::VectorXd& scatter, int averaged) {
+// The part of the realisation scatter s that the design's surfaces do not show in their
+// residual sigma_s: max(0, s^2 - sigma_s^2), per target. Design runs that each settle their
+// own packing are independent draws, their residual already holds the scatter (nothing is
+// added); design runs that share one packing or sample carry one common offset of std ~s,
+// invisible in the residual, which then moves the solution as a whole.
+Eigen::VectorXd unseen_scatter_variance(const Eigen::VectorXd& scatter, const std::vector<ResponseSurface>& s) {
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(scatter.size());
+  for (Eigen::Index i = 0; i < scatter.size(); ++i)
+    v[i] = std::max(0.0, scatter[i] * scatter[i] - std::pow(s[static_cast<std::size_t>(i)].residual_std(), 2));
+  return v;
+}
+
+// What a target's error is judged against: the measurement uncertainty u_i, combined, when
+// the scatter s_i was measured, with the scatter of the mean of `averaged` realisations and
+// the design's unseen offset (variance `offset`, zero for a single run judged on its own):
+// sqrt(u_i^2 + s_i^2 / averaged + offset_i).
+Eigen::VectorXd tolerances(const Problem& p, const Eigen::VectorXd& scatter, int averaged,
+                           const Eigen::VectorXd& offset = {}) {
   Eigen::VectorXd t = target_sigmas(p);
-  if (scatter.size() == t.size())
-    t = (t.array().square() + scatter.array().square() / static_cast<double>(averaged)).sqrt().matrix();
-  return t;
+  if (scatter.size() != t.size()) return t;
+  Eigen::ArrayXd v = t.array().square() + scatter.array().square() / static_cast<double>(averaged);
+  if (offset.size() == t.size()) v += offset.array();
+  return v.sqrt().matrix();
 }
 
 // Fills the solution's Jacobian, predicted targets and parameter uncertainties: measurement
-// (sigma_t), surface residual (sigma_s) and, when measured, realisation scatter (s).
+// (sigma_t), surface residual (sigma_s) and, when measured, the realisation scatter the
+// surfaces do not show (unseen_scatter_variance). G is the linearisation of the solver's
+// estimator, whose weights are 1 / sigma_t^2.
 void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>& s, CalibrationResult& r) {
   const Eigen::Index n = static_cast<Eigen::Index>(p.parameters.size());
   r.jacobian = surfaces_jacobian(s, r.solution);
@@ -100,8 +117,9 @@ void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>&
   Eigen::VectorXd sig_s(s.size());
   for (std::size_t i = 0; i < s.size(); ++i) sig_s[i] = s[i].residual_std();
   const bool scatter = r.scatter.size() == sig_t.size();
-  const Eigen::VectorXd sig_r = scatter ? r.scatter : Eigen::VectorXd::Zero(sig_t.size());
-  const Eigen::VectorXd w = (sig_t.array().square() + sig_r.array().square()).inverse();
+  const Eigen::VectorXd sig_r =
+      scatter ? Eigen::VectorXd(unseen_scatter_variance(r.scatter, s).cwiseSqrt()) : Eigen::VectorXd::Zero(sig_t.size());
+  const Eigen::VectorXd w = sig_t.array().square().inverse();
   const Eigen::MatrixXd JtW = r.jacobian.transpose() * w.asDiagonal();
   const Eigen::MatrixXd normal = JtW * r.jacobian;
   Eigen::MatrixXd G;
@@ -132,19 +150,33 @@ void finish_validation(const Problem& p, CalibrationResult& r, const Eigen::Vect
   r.within_uncertainty = normalised_misfit(p, achieved, tolerance) <= 1.0;
 }
 
-// Realisations 1..R of the point x (run y0 is realisation 0): appended to r.runs as
-// "replicate" runs, up to `jobs` at once; sets r.scatter and r.scatter_at and returns all
-// R + 1 realisations.
-std::vector<Eigen::VectorXd> measure_scatter(const Problem& p, const LoopOptions& opt, const Eigen::VectorXd& x,
-                                             const Eigen::VectorXd& y0, int iteration, CalibrationResult& r) {
-  const std::size_t extra = static_cast<std::size_t>(p.replicates);
-  std::vector<Eigen::VectorXd> ys(extra);
-  run_concurrently(extra, opt.jobs, [&](std::size_t k) { ys[k] = opt.replicate_model(x, static_cast<int>(k) + 1); });
+// `points` (realisation 0) and realisations 1..R of `x_replicated` (R = Problem::replicates),
+// all in one batch of up to `jobs` at once.
+struct BatchWithReplicates {
+  std::vector<Eigen::VectorXd> points, replicates;
+};
+BatchWithReplicates evaluate_with_replicates(const Problem& p, const ForwardModel& model, const LoopOptions& opt,
+                                             const std::vector<Eigen::VectorXd>& points,
+                                             const Eigen::VectorXd& x_replicated) {
+  const std::size_t n = points.size(), extra = static_cast<std::size_t>(p.replicates);
+  BatchWithReplicates b{std::vector<Eigen::VectorXd>(n), std::vector<Eigen::VectorXd>(extra)};
+  run_concurrently(n + extra, opt.jobs, [&](std::size_t k) {
+    if (k < n) b.points[k] = model(points[k]);
+    else b.replicates[k - n] = opt.replicate_model(x_replicated, static_cast<int>(k - n) + 1);
+  });
+  return b;
+}
+
+// Appends the replicates of x (realisation 0 gave y0) to r.runs, sets r.scatter and
+// r.scatter_at and returns all R + 1 realisations.
+std::vector<Eigen::VectorXd> record_scatter(const LoopOptions& opt, const Eigen::VectorXd& x, const Eigen::VectorXd& y0,
+                                            const std::vector<Eigen::VectorXd>& replicates, int iteration,
+                                            CalibrationResult& r) {
   std::vector<Eigen::VectorXd> all{y0};
-  for (std::size_t k = 0; k < extra; ++k) {
-    r.runs.push_back({x, ys[k], "replicate", iteration, static_cast<int>(k) + 1});
+  for (std::size_t k = 0; k < replicates.size(); ++k) {
+    r.runs.push_back({x, replicates[k], "replicate", iteration, static_cast<int>(k) + 1});
     if (opt.on_run) opt.on_run(r.runs.back());
-    all.push_back(ys[k]);
+    all.push_back(replicates[k]);
   }
   r.scatter = realisation_scatter(all);
   r.scatter_at = x;
@@ -236,7 +268,9 @@ void validate_problem(const Problem& p, bool sequential) {
     throw CalibrationError("design", "too few design points for a plane in " + std::to_string(p.parameters.size()) +
                                          " parameter(s): " + std::to_string(p.design.size()) + " given, at least " +
                                          std::to_string(need) + " needed");
-  if (p.replicates < 0) throw CalibrationError("scatter.replicates", "must be >= 0");
+  if (p.replicates < 0 || p.replicates == 1)
+    throw CalibrationError("scatter.replicates", "must be 0 (off) or at least 2: one extra realisation gives a scatter "
+                                                 "with a single degree of freedom");
   if (sequential && p.max_runs < static_cast<int>(need) + 1)
     throw CalibrationError("sequential.max_runs", "the budget must allow the " + std::to_string(need) +
                                                       " start points and at least one refinement run");
@@ -391,12 +425,14 @@ CalibrationResult calibrate_paper(const Problem& p, const ForwardModel& model, c
   r.surface_points = idx;
   surface_warnings(p, r.surfaces, r.warnings);
   r.solution = round_point(solve_on_surfaces(r.surfaces, p, p.lower(), p.upper(), p.design, true));
-  r.runs.push_back({r.solution, model(r.solution), "validation", 1});
+  // The validation run, and with replicates its other realisations (all in one batch).
+  const BatchWithReplicates v = evaluate_with_replicates(p, model, opt, {r.solution}, r.solution);
+  r.runs.push_back({r.solution, v.points[0], "validation", 1});
   if (opt.on_run) opt.on_run(r.runs.back());
-  Eigen::VectorXd achieved = r.runs.back().y;
+  Eigen::VectorXd achieved = v.points[0];
   int averaged = 1;
-  if (p.replicates > 0) {  // the validation's realisations; the mean is what is validated
-    const auto all = measure_scatter(p, opt, r.solution, achieved, 1, r);
+  if (p.replicates > 0) {  // the mean of the realisations is what is validated
+    const auto all = record_scatter(opt, r.solution, achieved, v.replicates, 1, r);
     achieved.setZero();
     for (const auto& y : all) achieved += y;
     achieved /= static_cast<double>(all.size());
@@ -404,7 +440,11 @@ CalibrationResult calibrate_paper(const Problem& p, const ForwardModel& model, c
     scatter_warnings(p, r);
   }
   propagate_uncertainty(p, r.surfaces, r);
-  finish_validation(p, r, achieved, tolerances(p, r.scatter, averaged));
+  // The mean of the realisations at the solution misses the measurement by its own scatter
+  // (s^2 / n) and by the design's offset the surfaces do not show.
+  finish_validation(p, r, achieved,
+                    tolerances(p, r.scatter, averaged,
+                               r.scatter.size() ? unseen_scatter_variance(r.scatter, r.surfaces) : Eigen::VectorXd()));
   r.iterations = 1;
   if (!r.within_uncertainty)
     r.warnings.push_back("the validation " + std::string(averaged > 1 ? "(mean of " + std::to_string(averaged) +
@@ -435,17 +475,20 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
     }
     for (auto& x : start) x = round_point(x);
   }
-  const std::vector<Eigen::VectorXd> ys = evaluate_batch(model, start, opt.jobs);
+  // The start design, and with replicates the other realisations of its first point (one batch).
+  const BatchWithReplicates b = evaluate_with_replicates(p, model, opt, start, start[0]);
+  const std::vector<Eigen::VectorXd>& ys = b.points;
   std::vector<std::size_t> pool;  // runs that take part in the search (not the replicates)
   for (std::size_t k = 0; k < start.size(); ++k) {
     r.runs.push_back({start[k], ys[k], "design", 0});
     pool.push_back(k);
     if (opt.on_run) opt.on_run(r.runs.back());
   }
-  // Know the noise before chasing it: the scatter at the first start point sets what a
-  // single run counts as a hit.
+  // Know the noise before chasing it: with the scatter s measured at the first start point
+  // (assumed to hold across the range), a single run is a hit within sqrt(u^2 + s^2).
+  // Refining further buys nothing: any one realisation, the design's included, is off by ~s.
   if (p.replicates > 0) {
-    measure_scatter(p, opt, start[0], ys[0], 0, r);
+    record_scatter(opt, start[0], ys[0], b.replicates, 0, r);
     scatter_warnings(p, r);
   }
   const Eigen::VectorXd tolerance = tolerances(p, r.scatter, 1);

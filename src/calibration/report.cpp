@@ -32,7 +32,8 @@ nlohmann::json calibration_summary(const Problem& p, const CalibrationResult& r,
                                {"uncertainty", finite_or_null(r.sigma[j])},
                                {"uncertainty_from_targets", finite_or_null(r.sigma_target[j])},
                                {"uncertainty_from_surface", finite_or_null(r.sigma_surface[j])},
-                               {"uncertainty_from_scatter", finite_or_null(r.sigma_scatter[j])},
+                               {"uncertainty_from_scatter",
+                                r.scatter.size() ? finite_or_null(r.sigma_scatter[j]) : nlohmann::json(nullptr)},
                                {"bounds", {p.parameters[j].lower, p.parameters[j].upper}}});
   s["targets"] = nlohmann::json::array();
   for (std::size_t i = 0; i < p.targets.size(); ++i)
@@ -50,6 +51,7 @@ nlohmann::json calibration_summary(const Problem& p, const CalibrationResult& r,
   if (r.scatter.size()) {
     nlohmann::json sc = {{"replicates", p.replicates},
                          {"realisations", p.replicates + 1},
+                         {"degrees_of_freedom", p.replicates},
                          {"at", std::vector<double>(r.scatter_at.data(), r.scatter_at.data() + r.scatter_at.size())},
                          {"where", r.mode == "paper" ? "the solution (validation averaged over the realisations)"
                                                      : "the first start point (before refining)"}};
@@ -130,7 +132,7 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
   o << "## Design and runs\n\n| # | role | ";
   for (const auto& par : p.parameters) o << par.name << " (" << par.unit << ") | ";
   for (const auto& t : p.targets) o << t.name << " (" << t.unit << ") | ";
-  o << "misfit (sigmas) | run |\n|";
+  o << (r.scatter.size() ? "misfit (tolerances) | run |\n|" : "misfit (sigmas) | run |\n|");
   for (std::size_t k = 0; k < 3 + p.parameters.size() + p.targets.size() + 1; ++k) o << "---|";
   o << "\n";
   for (std::size_t k = 0; k < r.runs.size(); ++k) {
@@ -138,7 +140,8 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
       << (r.runs[k].replicate ? " (seed +" + std::to_string(r.runs[k].replicate) + ")" : std::string()) << " | ";
     for (Eigen::Index j = 0; j < r.runs[k].x.size(); ++j) o << g(r.runs[k].x[j]) << " | ";
     for (Eigen::Index i = 0; i < r.runs[k].y.size(); ++i) o << g(r.runs[k].y[i]) << " | ";
-    o << g(normalised_misfit(p, r.runs[k].y), 3) << " | ";
+    o << g(r.scatter.size() ? normalised_misfit(p, r.runs[k].y, r.tolerance) : normalised_misfit(p, r.runs[k].y), 3)
+      << " | ";
     if (k < ctx.run_ids.size())
       o << "`runs/" << ctx.run_ids[k] << "` " << g(ctx.run_wall_seconds[k], 3) << " s" << (ctx.run_reused[k] ? " (reused)" : "");
     o << " |\n";
@@ -173,8 +176,15 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
       o << "| " << p.targets[i].name << " (" << p.targets[i].unit << ") | " << g(r.scatter[i], 3) << " | "
         << g(p.targets[i].uncertainty, 3) << " | " << g(r.scatter[i] / p.targets[i].uncertainty, 3) << " | "
         << g(r.tolerance[i], 3) << " |\n";
-    o << "\nTolerance: sqrt(u^2 + s^2 / n) for the mean of n realisations (paper mode: the validation's n = "
-      << p.replicates + 1 << "; sequential mode: a single run, n = 1).\n";
+    o << "\nStandard deviations over " << p.replicates + 1 << " realisations (" << p.replicates
+      << " degrees of freedom). Tolerance: "
+      << (r.mode == "paper"
+              ? "sqrt(u^2 + s^2 / n + o) for the mean of the n = " + std::to_string(p.replicates + 1) +
+                    " realisations, o = max(0, s^2 - residual^2) the scatter the design's surfaces do not show "
+                    "(one shared packing: a common offset)"
+              : std::string("sqrt(u^2 + s^2) for a single run (the scatter measured at the first start point is "
+                            "assumed to hold across the range)"))
+      << ". The parameter uncertainty adds o propagated like the targets'.\n";
   }
   o << "\n## Solution\n\n| parameter | value | uncertainty (1 sigma) | from targets | from surface | from scatter | bounds "
        "|\n|---|---|---|---|---|---|---|\n";
@@ -185,7 +195,7 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
       << " | " << g(p.parameters[j].lower) << " .. " << g(p.parameters[j].upper) << " |\n";
   o << "\nUncertainty: first order, dx = G dy with G = (J^T W J)^-1 J^T W (= J^-1 for as many targets as "
        "parameters), J the surfaces' Jacobian at the solution; target uncertainty, the surfaces' residual "
-       "standard error and (when measured) the realisation scatter of the design's one seed are propagated "
+       "standard error and (when measured) the realisation scatter the surfaces do not show are propagated "
        "separately and combined in quadrature.\n";
 
   const bool mean = r.scatter.size() && r.mode == "paper";

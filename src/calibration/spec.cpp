@@ -249,6 +249,9 @@ Spec read_spec(const std::string& path) {
   // Realisation scatter: the same point with other seeds (calibrate.hpp).
   const Node scatter = root.child("scatter");
   p.replicates = static_cast<int>(scatter.integer("replicates", 0, 0, 50));
+  if (p.replicates == 1)
+    scatter.fail("replicates", "must be 0 (off) or at least 2: one extra realisation gives a scatter with a single "
+                               "degree of freedom, too unreliable to widen a tolerance with");
   scatter.reject_unknown();
 
   // --- measured data -> targets ------------------------------------------------------
