@@ -93,15 +93,18 @@ Eigen::VectorXd unseen_scatter_variance(const Eigen::VectorXd& scatter, const st
 }
 
 // What a target's error is judged against: the measurement uncertainty u_i, combined, when
-// the scatter s_i was measured, with the scatter of the mean of `averaged` realisations and
-// the design's unseen offset (variance `offset`, zero for a single run judged on its own):
-// sqrt(u_i^2 + s_i^2 / averaged + offset_i).
+// the scatter s_i was measured, with what a realisation adds. A single run judged on its own:
+// sqrt(u^2 + s^2). The mean of n realisations at a point solved on surfaces that carry a
+// common offset c_0 of variance o (realisation 0 shares it: same packing): its miss
+// (1/n) sum_k (c_k + e_k) - c_0 has variance s^2 / n + o (1 - 2 / n) (c_k of variance o,
+// independent for k >= 1; e_k the rest, s^2 - o), so sqrt(u^2 + s^2 / n + o (1 - 2 / n)).
 Eigen::VectorXd tolerances(const Problem& p, const Eigen::VectorXd& scatter, int averaged,
                            const Eigen::VectorXd& offset = {}) {
   Eigen::VectorXd t = target_sigmas(p);
   if (scatter.size() != t.size()) return t;
-  Eigen::ArrayXd v = t.array().square() + scatter.array().square() / static_cast<double>(averaged);
-  if (offset.size() == t.size()) v += offset.array();
+  const double n = static_cast<double>(averaged);
+  Eigen::ArrayXd v = t.array().square() + scatter.array().square() / n;
+  if (offset.size() == t.size() && averaged > 1) v += offset.array() * (1.0 - 2.0 / n);
   return v.sqrt().matrix();
 }
 
@@ -219,8 +222,9 @@ void scatter_warnings(const Problem& p, CalibrationResult& r) {
       r.warnings.push_back("the realisation scatter of " + p.targets[i].name + " (std " + fmt(r.scatter[i]) + " " +
                            p.targets[i].unit + " over " + std::to_string(p.replicates + 1) +
                            " seeds) exceeds its measurement uncertainty (" + fmt(p.targets[i].uncertainty) +
-                           "): one run cannot resolve this target; the parameter uncertainty includes the scatter. "
-                           "A larger sample or runs averaged over seeds would narrow it");
+                           "): one run cannot resolve this target; the parameter uncertainty includes the part of the "
+                           "scatter the design's surfaces do not show. A larger sample or runs averaged over seeds "
+                           "would narrow it");
 }
 
 }  // namespace
@@ -441,7 +445,7 @@ CalibrationResult calibrate_paper(const Problem& p, const ForwardModel& model, c
   }
   propagate_uncertainty(p, r.surfaces, r);
   // The mean of the realisations at the solution misses the measurement by its own scatter
-  // (s^2 / n) and by the design's offset the surfaces do not show.
+  // and by the design's offset the surfaces do not show (tolerances above).
   finish_validation(p, r, achieved,
                     tolerances(p, r.scatter, averaged,
                                r.scatter.size() ? unseen_scatter_variance(r.scatter, r.surfaces) : Eigen::VectorXd()));
@@ -451,7 +455,9 @@ CalibrationResult calibrate_paper(const Problem& p, const ForwardModel& model, c
                                                                            " realisations) "
                                                                      : "run ") +
                          "misses the measurement by " + fmt(normalised_misfit(p, r.achieved, r.tolerance)) +
-                         " tolerances: the surface is not accurate enough near the solution; use "
+                         (r.scatter.size() ? " tolerances (measurement uncertainty and realisation scatter)"
+                                           : " standard uncertainties") +
+                         ": the surface is not accurate enough near the solution; use "
                          "--mode sequential or add design points near the solution");
   return r;
 }

@@ -16,11 +16,12 @@
 // one draw from the packings its seed can make (and from its chaotic dynamics), with
 // standard deviation s_i. The loop measures s_i from R + 1 realisations (seeds seed, seed +
 // 1, .., seed + R) at one point, batched with other runs:
-//  * paper mode, at the solution: the mean of the realisations is validated against
-//    sqrt(u_i^2 + s_i^2 / (R + 1) + o_i), o_i = max(0, s_i^2 - sigma_s,i^2) the part of the
-//    scatter the design's surfaces do not show in their residual sigma_s (a design sharing
-//    one packing carries one common offset of std ~s, which moves the solution; a design of
-//    independently settled runs shows its scatter in the residual and o ~ 0);
+//  * paper mode, at the solution: the mean of the n = R + 1 realisations is validated
+//    against sqrt(u_i^2 + s_i^2 / n + o_i (1 - 2 / n)), o_i = max(0, s_i^2 - sigma_s,i^2) the
+//    part of the scatter the design's surfaces do not show in their residual sigma_s (a
+//    design sharing one packing carries one common offset of std ~s, which moves the
+//    solution and which realisation 0 shares; a design of independently settled runs shows
+//    its scatter in the residual and o ~ 0);
 //  * sequential mode, at the first start point, before refining (assumed to hold across the
 //    range): a single run is a hit when |y_i - t_i| <= sqrt(u_i^2 + s_i^2); refining below
 //    the scatter buys nothing, since any one realisation is off by ~s.

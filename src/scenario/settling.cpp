@@ -15,11 +15,11 @@ SettleResult settle(World& world, Stepper& stepper, double threshold, double max
   progress.start_stage("settling");
   const double log_start = std::log10(std::max(threshold * 10.0, 1e-30));
   // The unbalanced force is read on check steps only (the loop ends on one): the other
-  // steps skip its sum, and no step sums the damping work (not reported here).
+  // steps skip its sum. The damping work is summed as the caller asked (its ledger).
   const IntegrationSums caller_sums = stepper.integration_sums();
   while (true) {
     const bool check = (r.steps + 1) % check_interval == 0;
-    stepper.set_integration_sums({.unbalanced = check, .damping_work = false});
+    stepper.set_integration_sums({.unbalanced = check, .damping_work = caller_sums.damping_work});
     stepper.step(world);
     ++r.steps;
     if (check) {

@@ -75,6 +75,7 @@ ShearSample prepare_shear_sample(const RunConfig& c, Progress& progress) {
   s.generated = world.particles.size();
   store_in_space_order(world, stepper);
   stepper.prepare(world);
+  stepper.set_integration_sums({.unbalanced = true, .damping_work = false});  // no energy ledger is reported
   s.settling = settle(world, stepper, c.sample.settle_unbalanced_force, c.sample.settle_max_time,
                       static_cast<std::uint64_t>(c.sample.settle_check_interval), progress);
   clock.count_steps(s.settling.steps, s.generated);

@@ -203,10 +203,11 @@ TEST(CalibrateDensity, ReplicatesMeasureTheScatterOverSeeds) {
   EXPECT_GT(scatter, 0.0);  // other seeds, other packings
   EXPECT_NEAR(scatter, std::sqrt(var), 1e-9 * std::sqrt(var));
   EXPECT_NEAR(s["targets"][0]["achieved"].get<double>(), mean, 1e-9 * mean);
-  // sqrt(u^2 + s^2 / 3 + max(0, s^2 - residual^2)) (calibrate.hpp); two design points: no residual.
+  // sqrt(u^2 + s^2 / 3 + o (1 - 2 / 3)), o = max(0, s^2 - residual^2) (calibrate.hpp); two
+  // design points: no residual.
   const double residual = s["surfaces"][0]["residual_std"].get<double>();
   EXPECT_NEAR(s["targets"][0]["tolerance"].get<double>(),
-              std::sqrt(1.0 + var / 3.0 + std::max(0.0, var - residual * residual)), 1e-9);
+              std::sqrt(1.0 + var / 3.0 + std::max(0.0, var - residual * residual) / 3.0), 1e-9);
   // Started again, every realisation is found in its run directory.
   ASSERT_EQ(run_colza("calibrate density --quiet --force --jobs 2 --spec " + (dir / "spec.toml").string() + " --out " +
                       (dir / "out").string()).exit_code, 0);
