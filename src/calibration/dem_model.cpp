@@ -50,37 +50,38 @@ std::vector<std::string> DemModel::seed_override(int replicate) const {
 }
 
 std::pair<std::string, std::string> DemModel::shared_packing(int replicate) {
-  // Settled once at the centre of the design range (per realisation), kept in
-  // runs/packing-<fp>/packing.txt.
-  std::lock_guard<std::mutex> lock(sample_mutex_);
-  if (auto it = packings_.find(replicate); it != packings_.end()) return it->second;
-  std::vector<std::string> o = spec_.model_set;
-  const Eigen::VectorXd mid = 0.5 * (spec_.problem.lower() + spec_.problem.upper());
-  for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j)
-    o.push_back(spec_.problem.parameters[j].key + "=" + num17(mid[j]));
-  for (const auto& s : seed_override(replicate)) o.push_back(s);
-  const RunConfig c = load_run_config(Scenario::kOedometer, spec_.model_config, o);
-  const std::string fp = fingerprint_text(c.resolved_toml);
-  const fs::path dir = runs_ / ("packing-" + fp);
-  const fs::path file = dir / "packing.txt";
-  if (!fs::exists(file)) {
-    fs::create_directories(dir);
-    Progress quiet(false);
-    const auto t0 = std::chrono::steady_clock::now();
-    const OedometerResult r = run_oedometer(c, quiet);
-    write_packing((dir / "packing.txt.tmp").string(), r.settled);
-    fs::rename(dir / "packing.txt.tmp", file);
-    write_text_atomically(dir / "config.toml", c.resolved_toml);
-    if (verbose_)
-      std::printf("  shared packing (seed %llu): %zu particles settled at the design centre (%.1f s) -> %s\n",
-                  static_cast<unsigned long long>(c.seed), r.particles,
-                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), file.c_str());
-  }
-  packings_[replicate] = {file.string(), fp};
-  if (replicate == 0)
-    packing_note_ = "every run loads the packing settled once at the design centre: " + file.string() +
-                    (spec_.problem.replicates > 0 ? " (replicates: one such packing per seed)" : "");
-  return packings_[replicate];
+  // Settled once at the centre of the design range (per realisation, each seed's packing
+  // settled at the same time as the others), kept in runs/packing-<fp>/packing.txt.
+  return packings_.get(replicate, [&] {
+    std::vector<std::string> o = spec_.model_set;
+    const Eigen::VectorXd mid = 0.5 * (spec_.problem.lower() + spec_.problem.upper());
+    for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j)
+      o.push_back(spec_.problem.parameters[j].key + "=" + num17(mid[j]));
+    for (const auto& s : seed_override(replicate)) o.push_back(s);
+    const RunConfig c = load_run_config(Scenario::kOedometer, spec_.model_config, o);
+    const std::string fp = fingerprint_text(c.resolved_toml);
+    const fs::path dir = runs_ / ("packing-" + fp);
+    const fs::path file = dir / "packing.txt";
+    if (!fs::exists(file)) {
+      fs::create_directories(dir);
+      Progress quiet(false);
+      const auto t0 = std::chrono::steady_clock::now();
+      const OedometerResult r = run_oedometer(c, quiet);
+      write_packing((dir / "packing.txt.tmp").string(), r.settled);
+      fs::rename(dir / "packing.txt.tmp", file);
+      write_text_atomically(dir / "config.toml", c.resolved_toml);
+      if (verbose_)
+        std::printf("  shared packing (seed %llu): %zu particles settled at the design centre (%.1f s) -> %s\n",
+                    static_cast<unsigned long long>(c.seed), r.particles,
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), file.c_str());
+    }
+    if (replicate == 0) {
+      std::lock_guard<std::mutex> lock(note_mutex_);
+      packing_note_ = "every run loads the packing settled once at the design centre: " + file.string() +
+                      (spec_.problem.replicates > 0 ? " (replicates: one such packing per seed)" : "");
+    }
+    return std::pair<std::string, std::string>{file.string(), fp};
+  });
 }
 
 RunConfig DemModel::config_for(const Eigen::VectorXd& x, int replicate, std::string& fp) {
@@ -105,29 +106,28 @@ RunConfig DemModel::config_for(const Eigen::VectorXd& x, int replicate, std::str
 }
 
 std::shared_ptr<const ShearSample> DemModel::shear_sample(const RunConfig& c) {
-  // One settled sample per sample fingerprint, kept in runs/sample-<fp>/packing.txt; every
-  // design run starts from the packing file (identical start whether fresh or resumed).
-  std::lock_guard<std::mutex> lock(sample_mutex_);
+  // One settled sample per sample fingerprint (different seeds settle at the same time),
+  // kept in runs/sample-<fp>/packing.txt; every design run starts from the packing file
+  // (identical start whether fresh or resumed).
   const std::string fp = sample_fingerprint(c);
-  if (auto it = samples_.find(fp); it != samples_.end()) return it->second;
-  const fs::path dir = runs_ / ("sample-" + fp);
-  const fs::path file = dir / "packing.txt";
-  Progress quiet(false);
-  if (!fs::exists(file)) {
-    fs::create_directories(dir);
-    const auto t0 = std::chrono::steady_clock::now();
-    const ShearSample s = prepare_shear_sample(c, quiet);
-    write_packing((dir / "packing.txt.tmp").string(), s.particles);
-    fs::rename(dir / "packing.txt.tmp", file);
-    if (verbose_)
-      std::printf("  shear sample: %zu particles settled (%.1f s) -> %s\n", s.particles.size(),
-                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), file.c_str());
-  }
-  RunConfig from_file = c;
-  from_file.shear_box.packing_file = file.string();
-  auto sample = std::make_shared<const ShearSample>(prepare_shear_sample(from_file, quiet));
-  samples_[fp] = sample;
-  return sample;
+  return samples_.get(fp, [&] {
+    const fs::path dir = runs_ / ("sample-" + fp);
+    const fs::path file = dir / "packing.txt";
+    Progress quiet(false);
+    if (!fs::exists(file)) {
+      fs::create_directories(dir);
+      const auto t0 = std::chrono::steady_clock::now();
+      const ShearSample s = prepare_shear_sample(c, quiet);
+      write_packing((dir / "packing.txt.tmp").string(), s.particles);
+      fs::rename(dir / "packing.txt.tmp", file);
+      if (verbose_)
+        std::printf("  shear sample: %zu particles settled (%.1f s) -> %s\n", s.particles.size(),
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), file.c_str());
+    }
+    RunConfig from_file = c;
+    from_file.shear_box.packing_file = file.string();
+    return std::make_shared<const ShearSample>(prepare_shear_sample(from_file, quiet));
+  });
 }
 
 nlohmann::json DemModel::run_oedometer_outputs(const RunConfig& c, const fs::path& dir, double& wall) {

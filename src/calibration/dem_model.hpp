@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "calibration/spec.hpp"
+#include "core/concurrent.hpp"
 #include "scenario/shear_box.hpp"
 
 namespace colza::calibration {
@@ -38,7 +39,7 @@ class DemModel {
   std::vector<DemRunRecord> records() const;
   const DemRunRecord* find(const Eigen::VectorXd& x, int replicate) const;
   std::string shared_packing_note() const {
-    std::lock_guard<std::mutex> lock(sample_mutex_);
+    std::lock_guard<std::mutex> lock(note_mutex_);
     return packing_note_;
   }
 
@@ -55,10 +56,10 @@ class DemModel {
   std::filesystem::path runs_;
   bool verbose_;
   mutable std::mutex mutex_;           // records_
-  mutable std::mutex sample_mutex_;    // shared samples / packings are made once
   std::vector<DemRunRecord> records_;
-  std::map<std::string, std::shared_ptr<const ShearSample>> samples_;
-  std::map<int, std::pair<std::string, std::string>> packings_;  // replicate -> (path, fingerprint)
+  OncePerKey<std::string, std::shared_ptr<const ShearSample>> samples_;  // by sample fingerprint
+  OncePerKey<int, std::pair<std::string, std::string>> packings_;       // replicate -> (path, fingerprint)
+  mutable std::mutex note_mutex_;      // packing_note_
   std::string packing_note_;
 };
 

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cstddef>
 #include <exception>
+#include <map>
+#include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 #ifdef _OPENMP
@@ -53,5 +56,34 @@ void run_concurrently(std::size_t count, int threads, Job&& job) {
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
 }
+
+// A value made once per key (a settled packing per seed, say): callers asking for different
+// keys make theirs at the same time; callers asking for the same key wait for the first,
+// which makes it. If making throws, the next caller tries again.
+template <class Key, class Value>
+class OncePerKey {
+ public:
+  template <class Make>
+  Value get(const Key& key, Make&& make) {
+    std::shared_ptr<Slot> slot;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      auto& s = slots_[key];
+      if (!s) s = std::make_shared<Slot>();
+      slot = s;
+    }
+    std::lock_guard<std::mutex> lock(slot->mutex);
+    if (!slot->value) slot->value = make();
+    return *slot->value;
+  }
+
+ private:
+  struct Slot {
+    std::mutex mutex;
+    std::optional<Value> value;
+  };
+  std::mutex mutex_;
+  std::map<Key, std::shared_ptr<Slot>> slots_;
+};
 
 }  // namespace colza
