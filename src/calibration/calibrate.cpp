@@ -171,19 +171,20 @@ BatchWithReplicates evaluate_with_replicates(const Problem& p, const ForwardMode
 }
 
 // Appends the replicates of x (realisation 0 gave y0) to r.runs, sets r.scatter and
-// r.scatter_at and returns all R + 1 realisations.
-std::vector<Eigen::VectorXd> record_scatter(const LoopOptions& opt, const Eigen::VectorXd& x, const Eigen::VectorXd& y0,
-                                            const std::vector<Eigen::VectorXd>& replicates, int iteration,
-                                            CalibrationResult& r) {
+// r.scatter_at and returns the mean of all R + 1 realisations.
+Eigen::VectorXd record_scatter(const LoopOptions& opt, const Eigen::VectorXd& x, const Eigen::VectorXd& y0,
+                               const std::vector<Eigen::VectorXd>& replicates, int iteration, CalibrationResult& r) {
   std::vector<Eigen::VectorXd> all{y0};
+  Eigen::VectorXd mean = y0;
   for (std::size_t k = 0; k < replicates.size(); ++k) {
     r.runs.push_back({x, replicates[k], "replicate", iteration, static_cast<int>(k) + 1});
     if (opt.on_run) opt.on_run(r.runs.back());
     all.push_back(replicates[k]);
+    mean += replicates[k];
   }
   r.scatter = realisation_scatter(all);
   r.scatter_at = x;
-  return all;
+  return mean / static_cast<double>(all.size());
 }
 
 void surface_warnings(const Problem& p, const std::vector<ResponseSurface>& s, std::vector<std::string>& w) {
@@ -215,6 +216,11 @@ void require_replicate_model(const Problem& p, const LoopOptions& opt) {
                                                  "scatter with: set replicates = 0");
 }
 
+// What a misfit counts in: the measurement uncertainty, or the tolerance with the scatter.
+std::string misfit_unit(const CalibrationResult& r) {
+  return r.scatter.size() ? " tolerances (measurement uncertainty and realisation scatter)" : " standard uncertainties";
+}
+
 // A scatter larger than the measurement uncertainty: one run cannot resolve the target.
 void scatter_warnings(const Problem& p, CalibrationResult& r) {
   for (std::size_t i = 0; i < p.targets.size(); ++i)
@@ -235,6 +241,10 @@ double normalised_misfit(const Problem& p, const Eigen::VectorXd& y, const Eigen
   double m = 0.0;
   for (std::size_t i = 0; i < p.targets.size(); ++i) m = std::max(m, std::abs(y[i] - p.targets[i].value) / tolerance[i]);
   return m;
+}
+
+Eigen::VectorXd single_run_tolerance(const Problem& p, const Eigen::VectorXd& scatter) {
+  return tolerances(p, scatter, 1);
 }
 
 Eigen::VectorXd realisation_scatter(const std::vector<Eigen::VectorXd>& ys) {
@@ -434,30 +444,23 @@ CalibrationResult calibrate_paper(const Problem& p, const ForwardModel& model, c
   r.runs.push_back({r.solution, v.points[0], "validation", 1});
   if (opt.on_run) opt.on_run(r.runs.back());
   Eigen::VectorXd achieved = v.points[0];
-  int averaged = 1;
+  const int averaged = 1 + p.replicates;
   if (p.replicates > 0) {  // the mean of the realisations is what is validated
-    const auto all = record_scatter(opt, r.solution, achieved, v.replicates, 1, r);
-    achieved.setZero();
-    for (const auto& y : all) achieved += y;
-    achieved /= static_cast<double>(all.size());
-    averaged = static_cast<int>(all.size());
+    achieved = record_scatter(opt, r.solution, achieved, v.replicates, 1, r);
     scatter_warnings(p, r);
   }
   propagate_uncertainty(p, r.surfaces, r);
   // The mean of the realisations at the solution misses the measurement by its own scatter
-  // and by the design's offset the surfaces do not show (tolerances above).
-  finish_validation(p, r, achieved,
-                    tolerances(p, r.scatter, averaged,
-                               r.scatter.size() ? unseen_scatter_variance(r.scatter, r.surfaces) : Eigen::VectorXd()));
+  // and by the design's offset the surfaces do not show (tolerances above; both empty, and
+  // the tolerance u, without replicates).
+  finish_validation(p, r, achieved, tolerances(p, r.scatter, averaged, unseen_scatter_variance(r.scatter, r.surfaces)));
   r.iterations = 1;
   if (!r.within_uncertainty)
     r.warnings.push_back("the validation " + std::string(averaged > 1 ? "(mean of " + std::to_string(averaged) +
                                                                            " realisations) "
                                                                      : "run ") +
                          "misses the measurement by " + fmt(normalised_misfit(p, r.achieved, r.tolerance)) +
-                         (r.scatter.size() ? " tolerances (measurement uncertainty and realisation scatter)"
-                                           : " standard uncertainties") +
-                         ": the surface is not accurate enough near the solution; use "
+                         misfit_unit(r) + ": the surface is not accurate enough near the solution; use "
                          "--mode sequential or add design points near the solution");
   return r;
 }
@@ -497,7 +500,7 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
     record_scatter(opt, start[0], ys[0], b.replicates, 0, r);
     scatter_warnings(p, r);
   }
-  const Eigen::VectorXd tolerance = tolerances(p, r.scatter, 1);
+  const Eigen::VectorXd tolerance = single_run_tolerance(p, r.scatter);
   auto misfit = [&](std::size_t k) { return normalised_misfit(p, r.runs[k].y, tolerance); };
   std::size_t best = pool[0];
   for (std::size_t k : pool)
@@ -569,10 +572,8 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
       r.warnings.push_back(std::string("judged on the last local planes: ") + e.what());
     }
     r.warnings.push_back("stopped after " + std::to_string(pool.size()) + " runs (sequential.max_runs = " +
-                         std::to_string(p.max_runs) + ") with the best run " + fmt(normalised_misfit(p, r.achieved, tolerance)) +
-                         (r.scatter.size() ? " tolerances (measurement uncertainty and realisation scatter)"
-                                           : " standard uncertainties") +
-                         " from the measurement: raise sequential.max_runs");
+                         std::to_string(p.max_runs) + ") with the best run " +
+                         fmt(normalised_misfit(p, r.achieved, tolerance)) + misfit_unit(r) + " from the measurement: raise sequential.max_runs");
   }
   return r;
 }

@@ -148,6 +148,8 @@ CalibrationResult calibrate_sequential(const Problem& problem, const ForwardMode
 double normalised_misfit(const Problem& problem, const Eigen::VectorXd& y);
 // Same against a tolerance per target.
 double normalised_misfit(const Problem& problem, const Eigen::VectorXd& y, const Eigen::VectorXd& tolerance);
+// What one run's error is judged against: sqrt(u_i^2 + s_i^2), or u_i when `scatter` is empty.
+Eigen::VectorXd single_run_tolerance(const Problem& problem, const Eigen::VectorXd& scatter);
 // Per-target sample standard deviation (n - 1) of realisations (rows: realisations).
 Eigen::VectorXd realisation_scatter(const std::vector<Eigen::VectorXd>& realisations);
 

@@ -129,12 +129,7 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
       << (p.replicates ? " + " + std::to_string(p.replicates) + " replicates" : std::string()) << ")";
   o << "; wall time " << g(ctx.wall_seconds, 4) << " s.\n\n";
 
-  // A single run is judged against sqrt(u^2 + s^2) (u alone when the scatter was not measured).
-  Eigen::VectorXd single_run_tolerance(static_cast<Eigen::Index>(p.targets.size()));
-  for (std::size_t i = 0; i < p.targets.size(); ++i)
-    single_run_tolerance[static_cast<Eigen::Index>(i)] =
-        r.scatter.size() ? std::hypot(p.targets[i].uncertainty, r.scatter[static_cast<Eigen::Index>(i)])
-                         : p.targets[i].uncertainty;
+  const Eigen::VectorXd run_tolerance = single_run_tolerance(p, r.scatter);
   o << "## Design and runs\n\n| # | role | ";
   for (const auto& par : p.parameters) o << par.name << " (" << par.unit << ") | ";
   for (const auto& t : p.targets) o << t.name << " (" << t.unit << ") | ";
@@ -146,7 +141,7 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
       << (r.runs[k].replicate ? " (seed +" + std::to_string(r.runs[k].replicate) + ")" : std::string()) << " | ";
     for (Eigen::Index j = 0; j < r.runs[k].x.size(); ++j) o << g(r.runs[k].x[j]) << " | ";
     for (Eigen::Index i = 0; i < r.runs[k].y.size(); ++i) o << g(r.runs[k].y[i]) << " | ";
-    o << g(normalised_misfit(p, r.runs[k].y, single_run_tolerance), 3) << " | ";
+    o << g(normalised_misfit(p, r.runs[k].y, run_tolerance), 3) << " | ";
     if (k < ctx.run_ids.size())
       o << "`runs/" << ctx.run_ids[k] << "` " << g(ctx.run_wall_seconds[k], 3) << " s" << (ctx.run_reused[k] ? " (reused)" : "");
     o << " |\n";

@@ -26,9 +26,9 @@ struct IntegrationReport {
 };
 
 // Which sums over particles a step reports. Each is a serial chain over the particles
-// (in particle order, for bits that do not depend on the thread count): the damping work
-// is 6 additions per particle, about a tenth of a step on the oedometer, so stages that do
-// not read them switch them off. A sum not computed is reported as NaN (so is the ledger's
+// (in particle order, for bits that do not depend on the thread count; the damping work is
+// 6 additions per particle): switching both off took the integrator from 13.1 % to 7.6 % of a
+// one-thread oedometer loading (perf), so stages that do not read them switch them off. A sum not computed is reported as NaN (so is the ledger's
 // damping term from then on: a misuse shows). The motion does not depend on these flags.
 struct IntegrationSums {
   bool unbalanced = true;    // mean and max unbalanced force (settling, scene stop condition)
