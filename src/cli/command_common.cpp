@@ -36,6 +36,9 @@ double overall_rate(const std::vector<StageTiming>& stages) {
 
 void add_timing(nlohmann::json& summary, const std::vector<StageTiming>& stages) {
   summary["wall_seconds"] = total_wall_seconds(stages);
+  double cpu = 0.0;
+  for (const auto& s : stages) cpu += s.cpu_seconds;
+  summary["cpu_seconds"] = cpu;
   summary["particle_steps_per_second"] = overall_rate(stages);
   summary["stages"] = stages_json(stages);
 }

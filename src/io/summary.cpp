@@ -11,6 +11,7 @@ nlohmann::json stages_json(const std::vector<StageTiming>& stages) {
     out.push_back({{"name", s.name},
                    {"steps", s.steps},
                    {"wall_seconds", s.wall_seconds},
+                   {"cpu_seconds", s.cpu_seconds},
                    {"particle_steps_per_second", s.particle_steps_per_second()}});
   return out;
 }
