@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <variant>
 
 #ifdef _OPENMP
@@ -189,10 +190,15 @@ template <class Normal, class Tangential, class Bond>
 // serially in wall-pair order, and the logs replayed in pair order, then wall-pair order.
 // Forces, torques, walls and ledger terms are those of the serial loops, bit for bit, at
 // any thread count.
+//
+// With `motion` (not null), each thread then advances its own particles (integrate_motion):
+// their forces are final after its phase 2, and no other thread reads them after the
+// barrier (phase 2 touches only the thread's own particles, the slots and the walls).
 template <class Normal, class Tangential, class Bond>
 [[gnu::flatten]] void all_pairs_threaded(const Normal& normal_law, const Tangential& tangential_law,
                                           const Bond& bond_law, bool bond_new_contacts, World& world,
-                                          const PairTable& pairs, ForceLoopTotals& totals, ForcePartition& part) {
+                                          const PairTable& pairs, ForceLoopTotals& totals, ForcePartition& part,
+                                          const IntegratorSettings* motion) {
   ParticleArrays& p = world.particles;
   auto& pp = world.contacts.particle_pairs;
   auto& pw = world.contacts.wall_pairs;
@@ -259,6 +265,7 @@ template <class Normal, class Tangential, class Bond>
           torque[i] += moment;
         }
       }
+      if (motion) integrate_motion(p, *motion, dt, part.particle_begin[r], part.particle_begin[r + 1]);
     }
     busy += seconds_now() - started;
     // Measured cost of this thread's ranges, for the next partition (balance only).
@@ -305,11 +312,17 @@ void Stepper::compute_forces(World& world) {
       partition_.build(world.contacts, world.particles.size(), world.walls.size(), threads);
     ++threaded_force_steps_;
   }
+  // The motion goes into the threaded force loop when nothing reads the particles between the
+  // halves of the step and no integration sum is wanted (set_between_halves).
+  integrated_with_forces_ =
+      threaded && between_halves_ == BetweenHalves::kWallsOnly && !sums_.unbalanced && !sums_.damping_work;
+  const IntegratorSettings* motion = integrated_with_forces_ ? &physics_.integrator : nullptr;
+  if (integrated_with_forces_) ++motion_with_forces_steps_;
   ForceLoopTotals totals;
   std::visit(
       [&](const auto& normal, const auto& tangential, const auto& bond) {
         if (threaded) {
-          all_pairs_threaded(normal, tangential, bond, bond_new, world, pairs_, totals, partition_);
+          all_pairs_threaded(normal, tangential, bond, bond_new, world, pairs_, totals, partition_, motion);
         } else {
           particle_pairs_serial(normal, tangential, bond, bond_new, world, pairs_, totals);
           wall_pairs_serial(normal, tangential, world, pairs_, totals);
@@ -334,8 +347,13 @@ void Stepper::begin_step(World& world) {
 }
 
 void Stepper::finish_step(World& world) {
-  last_integration_ =
-      integrate_step(world.particles, physics_.integrator, world.dt, worker_threads(), unbalanced_scratch_, sums_);
+  if (integrated_with_forces_) {  // the motion is done; no sum was wanted (they are NaN)
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    last_integration_ = IntegrationReport{nan, nan, nan};
+  } else {
+    last_integration_ =
+        integrate_step(world.particles, physics_.integrator, world.dt, worker_threads(), unbalanced_scratch_, sums_);
+  }
   ledger_.damping_dissipated += last_integration_.damping_work;
   for (auto& wall : world.walls) wall.origin += world.dt * wall.velocity;
   world.time += world.dt;

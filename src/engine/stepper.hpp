@@ -55,11 +55,21 @@ class Stepper {
   // them off; the motion is the same.
   void set_integration_sums(IntegrationSums sums) { sums_ = sums; }
   IntegrationSums integration_sums() const { return sums_; }
+  // What the caller reads or writes between begin_step and finish_step (or in a step's
+  // observer). kWallsOnly promises that it touches only the walls and the contact store,
+  // never the particles: the threaded force loop may then advance each thread's particles
+  // as soon as their forces are final, inside the same parallel region (one fork and join
+  // fewer per step), when no integration sum is wanted; particle states after begin_step are
+  // then already those of t + dt. The motion is the same bits either way.
+  enum class BetweenHalves { kParticles, kWallsOnly };
+  void set_between_halves(BetweenHalves b) { between_halves_ = b; }
   const EnergyLedger& ledger() const { return ledger_; }
   const ContactEvents& events() const { return events_; }  // cumulative
   const NeighbourSearch& neighbours() const { return neighbours_; }
   // Steps whose forces took the threaded path (engine/force_partition.hpp); for tests.
   std::uint64_t threaded_force_steps() const { return threaded_force_steps_; }
+  // Steps whose motion was done inside the threaded force loop (set_between_halves); for tests.
+  std::uint64_t motion_with_forces_steps() const { return motion_with_forces_steps_; }
   void rebuild_neighbours_now(World& world) { neighbours_.rebuild(world.particles, world.walls, world.contacts); }
 
  private:
@@ -69,10 +79,13 @@ class Stepper {
   NeighbourSearch neighbours_;
   IntegrationReport last_integration_;
   IntegrationSums sums_;
+  BetweenHalves between_halves_ = BetweenHalves::kParticles;
+  bool integrated_with_forces_ = false;  // this step's motion was done by the threaded force loop
   EnergyLedger ledger_;
   ContactEvents events_;
 
   std::uint64_t threaded_force_steps_ = 0;
+  std::uint64_t motion_with_forces_steps_ = 0;
   ForcePartition partition_;               // threaded force path (engine/force_partition.hpp)
   std::vector<double> unbalanced_scratch_;  // per particle (integrator)
 };

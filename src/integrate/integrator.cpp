@@ -139,6 +139,11 @@ void mark_untracked(IntegrationReport& report, IntegrationSums sums) {
 
 }  // namespace
 
+void integrate_motion(ParticleArrays& p, const IntegratorSettings& s, double dt, std::size_t begin, std::size_t end) {
+  RangeReport unused;
+  integrate_range(p, s, dt, begin, end, unused, nullptr, IntegrationSums{.unbalanced = false, .damping_work = false});
+}
+
 IntegrationReport integrate_step(ParticleArrays& p, const IntegratorSettings& s, double dt, IntegrationSums sums) {
   IntegrationReport report;
   RangeReport r;

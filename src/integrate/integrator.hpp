@@ -49,4 +49,10 @@ inline constexpr std::size_t kMinParticlesPerThread = 512;
 IntegrationReport integrate_step(ParticleArrays& particles, const IntegratorSettings& settings, double dt,
                                  int threads, std::vector<double>& unbalanced_scratch, IntegrationSums sums = {});
 
+// Only the motion of particles [begin, end), no sums: the state update of integrate_step,
+// the same bits for every particle whatever the range (the threaded force loop of
+// engine/stepper.cpp integrates each thread's particles as soon as their forces are final).
+void integrate_motion(ParticleArrays& particles, const IntegratorSettings& settings, double dt, std::size_t begin,
+                      std::size_t end);
+
 }  // namespace colza

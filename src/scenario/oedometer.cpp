@@ -101,6 +101,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   bool stop = false;
   std::uint64_t load_steps = 0;
   stepper.set_integration_sums({.unbalanced = false, .damping_work = false});  // neither is read while loading
+  stepper.set_between_halves(Stepper::BetweenHalves::kWallsOnly);  // the observer reads the piston and contact counts
   while (!stop) {
     stepper.step(world, [&](const World& w) {
       const Wall& p = w.walls[piston_id];

@@ -144,6 +144,8 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
 
   // --- consolidation under the servo ------------------------------------------------
   stepper.set_integration_sums({.unbalanced = false, .damping_work = false});  // neither is read from here on
+  // Between the halves of a step only the walls (servo, forces) and contact counts are read.
+  stepper.set_between_halves(Stepper::BetweenHalves::kWallsOnly);
   StageClock consolidation_clock("consolidation");
   progress.start_stage("consolidation");
   const double t0 = world.time;

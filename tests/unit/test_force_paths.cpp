@@ -2,7 +2,8 @@
 //   * the scalar reference loop (taken when there is more than one particle material),
 //   * the batched kernel (one contact per SIMD lane, one particle material),
 //   * the threaded path (particle ranges, boundary particles summed from slots in pair
-//     order, engine/force_partition.hpp), 2 and 3 threads.
+//     order, engine/force_partition.hpp), 2 and 3 threads, also with each thread's motion
+//     done inside the force loop (Stepper::set_between_halves).
 // A dense, jostling packing of 1200 spheres in a closed box (several thousand candidate pairs,
 // above the threaded path's threshold of 2048) with friction sliding, contacts forming and separating, bonds
 // holding and breaking, runs 300 steps on each path; positions, velocities, spins and
@@ -30,6 +31,7 @@ constexpr int kSites[3] = {10, 10, 12};  // lattice sites along x, y, z: 1200 sp
 struct Setup {
   int particle_materials = 1;  // 2 identical materials force the scalar reference loop
   bool bonds = false;
+  bool walls_only_between_halves = false;  // no integration sums; motion may go into the threaded force loop
 };
 
 World make_world(const Setup& setup) {
@@ -85,6 +87,7 @@ struct PathRun {
   std::uint64_t broken_tension = 0, broken_shear = 0;
   EnergyLedger ledger;
   std::uint64_t threaded_steps = 0;
+  std::uint64_t motion_with_forces_steps = 0;
 };
 
 PathRun run_path(const Setup& setup, int threads) {
@@ -97,6 +100,10 @@ PathRun run_path(const Setup& setup, int threads) {
   PathRun r{make_world(setup)};
   Stepper stepper(physics(setup));
   stepper.prepare(r.world);
+  if (setup.walls_only_between_halves) {
+    stepper.set_integration_sums({.unbalanced = false, .damping_work = false});
+    stepper.set_between_halves(Stepper::BetweenHalves::kWallsOnly);
+  }
   for (int s = 0; s < 300; ++s) {
     stepper.step(r.world);
     r.max_pairs = std::max(r.max_pairs, r.world.contacts.particle_pairs.size());
@@ -105,6 +112,7 @@ PathRun run_path(const Setup& setup, int threads) {
   r.broken_shear = stepper.events().bonds_broken_shear;
   r.ledger = stepper.ledger();
   r.threaded_steps = stepper.threaded_force_steps();
+  r.motion_with_forces_steps = stepper.motion_with_forces_steps();
 #ifdef _OPENMP
   omp_set_num_threads(saved);
 #endif
@@ -195,5 +203,19 @@ TEST(ForcePaths, ThreeThreadsGiveTheOneThreadBits) {
   EXPECT_EQ(three.threaded_steps, 300u);
   expect_same_state(one.world, three.world);
   expect_same_pair_energies(one.ledger, three.ledger);
+}
+// The motion inside the threaded force loop (set_between_halves(kWallsOnly), no sums): the
+// same bits as the separate integration, at two and three threads.
+TEST(ForcePaths, MotionInsideTheThreadedForceLoopGivesTheSameBits) {
+  const PathRun one = run_path({1, true}, 1);
+  const PathRun one_walls_only = run_path({1, true, true}, 1);
+  EXPECT_EQ(one_walls_only.motion_with_forces_steps, 0u);  // serial path: separate integration
+  expect_same_state(one.world, one_walls_only.world);
+  for (int threads : {2, 3}) {
+    const PathRun fused = run_path({1, true, true}, threads);
+    EXPECT_EQ(fused.motion_with_forces_steps, 300u) << threads << " threads";
+    expect_same_state(one.world, fused.world);
+    expect_same_pair_energies(one.ledger, fused.ledger);
+  }
 }
 #endif
