@@ -1,6 +1,7 @@
 // Wall-clock and CPU-time accounting of a scenario's stages (settling, loading, ...).
 // CPU time is the process's (all threads, CLOCK_PROCESS_CPUTIME_ID): on a machine shared
-// with other jobs the wall time measures the machine, the CPU time the work.
+// with other jobs the wall time measures the machine, the CPU time the work. With concurrent
+// runs in one process (--jobs > 1: shear series, calibration) it counts them all.
 #pragma once
 #include <chrono>
 #include <ctime>
