@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <variant>
 
 #ifdef _OPENMP
@@ -347,9 +346,8 @@ void Stepper::begin_step(World& world) {
 }
 
 void Stepper::finish_step(World& world) {
-  if (integrated_with_forces_) {  // the motion is done; no sum was wanted (they are NaN)
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    last_integration_ = IntegrationReport{nan, nan, nan};
+  if (integrated_with_forces_) {  // the motion is done; no sum was wanted
+    last_integration_ = report_without_sums();
   } else {
     last_integration_ =
         integrate_step(world.particles, physics_.integrator, world.dt, worker_threads(), unbalanced_scratch_, sums_);

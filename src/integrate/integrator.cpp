@@ -144,6 +144,12 @@ void integrate_motion(ParticleArrays& p, const IntegratorSettings& s, double dt,
   integrate_range(p, s, dt, begin, end, unused, nullptr, IntegrationSums{.unbalanced = false, .damping_work = false});
 }
 
+IntegrationReport report_without_sums() {
+  IntegrationReport report;
+  mark_untracked(report, IntegrationSums{.unbalanced = false, .damping_work = false});
+  return report;
+}
+
 IntegrationReport integrate_step(ParticleArrays& p, const IntegratorSettings& s, double dt, IntegrationSums sums) {
   IntegrationReport report;
   RangeReport r;

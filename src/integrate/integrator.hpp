@@ -27,9 +27,10 @@ struct IntegrationReport {
 
 // Which sums over particles a step reports. Each is a serial chain over the particles
 // (in particle order, for bits that do not depend on the thread count; the damping work is
-// 6 additions per particle): switching both off took the integrator from 13.1 % to 7.6 % of a
-// one-thread oedometer loading (perf), so stages that do not read them switch them off. A sum not computed is reported as NaN (so is the ledger's
-// damping term from then on: a misuse shows). The motion does not depend on these flags.
+// 6 additions per particle): switching both off took the integrator from 13.1 % to 7.6 % of
+// a one-thread oedometer loading (perf), so stages that do not read them switch them off. A
+// sum not computed is reported as NaN (so is the ledger's damping term from then on: a
+// misuse shows). The motion does not depend on these flags.
 struct IntegrationSums {
   bool unbalanced = true;    // mean and max unbalanced force (settling, scene stop condition)
   bool damping_work = true;  // energy ledger (scenes)
@@ -54,5 +55,8 @@ IntegrationReport integrate_step(ParticleArrays& particles, const IntegratorSett
 // engine/stepper.cpp integrates each thread's particles as soon as their forces are final).
 void integrate_motion(ParticleArrays& particles, const IntegratorSettings& settings, double dt, std::size_t begin,
                       std::size_t end);
+// What a step whose motion was done by integrate_motion reports: no sum (all NaN), as
+// integrate_step with both sums off.
+IntegrationReport report_without_sums();
 
 }  // namespace colza
