@@ -5,9 +5,12 @@
 #   density:     truth rho_p = 1280 kg/m^3 (Table 1 otherwise)  -> its bulk density
 #   compression: truth kn_p = 470e3 N/m, mu_pp = 0.33, rho_p = 1230 -> its compression curve
 #   shear:       truth Cn = 1.8 N, Cs = 3.3 N (Table 2 otherwise) -> its shear curves at 25.75
-#                and 78.75 kPa (the paper's box, 30 mm of shear)
+#                and 78.75 kPa (the paper's box, 30 mm of shear); the design runs are the same
+#                runs as data/calibration/shear.toml's: a runs-shear directory copied from
+#                such a calibration's runs/ is reused
 # density + compression: about 40 min on 2 cores. shear: hours (each design point is two
-# 30 mm loads of 11342 spheres, ~8 min each on 2 cores; ~12 loads per mode plus the truth).
+# 30 mm loads of 11342 spheres, 10-15 min each on 2 cores; the settling of the sample ~11 min;
+# 12 loads for the paper mode, 6-14 for the sequential mode, plus the truth).
 # Calibrations reuse finished design runs, so an interrupted run continues where it stopped.
 # Usage: scripts/calibration-identity-full.sh [WORKDIR [STAGE ...]]
 #        (default /tmp/colza-identity-full, stages density compression; add shear explicitly)
@@ -36,17 +39,20 @@ if wants compression; then
     "$root/data/calibration/identity/compression_full.toml" > compression_full.toml
 fi
 if wants shear; then
+  # The truth settles its sample from data/shear.toml at seed 1, as every design run does.
   shear="$root/data/shear.toml"
   [ -f truth-shear/summary.json ] || "$colza" run shear-series --config "$shear" \
     --set 'shear_box.normal_stresses=[25750.0, 78750.0]' --set contact.contact_bond.normal_strength=1.8 \
-    --set contact.contact_bond.shear_strength=3.3 --out truth-shear --quiet
-  sed -e "s|@SHEAR_CONFIG@|$shear|" -e "s|@TRUTH_PACKING@|$work/truth-shear/packing.txt|" \
-    -e "s|@TRUTH_DIR@|$work/truth-shear|" "$root/data/calibration/identity/shear_full.toml" > shear_full.toml
+    --set contact.contact_bond.shear_strength=3.3 --jobs 2 --threads 1 --out truth-shear --quiet
+  sed -e "s|@SHEAR_CONFIG@|$shear|" -e "s|@TRUTH_DIR@|$work/truth-shear|" \
+    "$root/data/calibration/identity/shear_full.toml" > shear_full.toml
 fi
 
 for stage in "${stages[@]}"; do
   for mode in paper sequential; do
     echo "== $stage, $mode"
-    "$colza" calibrate "$stage" --spec "${stage}_full.toml" --mode "$mode" --out "out-$stage-$mode" --force --quiet || true
+    # One runs directory per stage: the two modes share the runs they have in common.
+    "$colza" calibrate "$stage" --spec "${stage}_full.toml" --mode "$mode" --out "out-$stage-$mode" \
+      --runs "runs-$stage" --force --quiet || true
   done
 done

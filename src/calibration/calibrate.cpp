@@ -145,6 +145,31 @@ void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>&
   r.sigma = (cov_t + cov_s + cov_r).diagonal().cwiseSqrt();
 }
 
+// A parameter whose +/- 2 sigma interval (sigma from propagate_uncertainty) is wider than its
+// design range is not determined by the targets: any value in the range reproduces them
+// within their uncertainty and the surfaces' error, so the solution's value of it is
+// arbitrary. Says so, with how much each target's surface changes across the range (|J_ij|
+// times the range, in the target's unit and in units of its uncertainty). Infinite sigma has
+// its own warning (propagate_uncertainty).
+void determination_warnings(const Problem& p, CalibrationResult& r) {
+  for (std::size_t j = 0; j < p.parameters.size(); ++j) {
+    const Parameter& q = p.parameters[j];
+    const double range = q.upper - q.lower, sigma = r.sigma[static_cast<Eigen::Index>(j)];
+    if (!std::isfinite(sigma) || 4.0 * sigma <= range) continue;
+    std::string effects;
+    for (std::size_t i = 0; i < p.targets.size(); ++i) {
+      const double change = std::abs(r.jacobian(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j))) * range;
+      effects += (i ? ", " : "") + p.targets[i].name + " by " + fmt(change) + " " + p.targets[i].unit + " (" +
+                 fmt(change / p.targets[i].uncertainty) + " uncertainties)";
+    }
+    r.warnings.push_back(q.name + " is not determined by these targets: +/- 2 sigma = +/- " + fmt(2.0 * sigma) + " " +
+                         q.unit + " is wider than its design range " + fmt(q.lower) + " .. " + fmt(q.upper) + " " +
+                         q.unit + " (across it the surfaces change " + effects +
+                         "); its value in the solution is arbitrary: fix it from other data, or add a target that "
+                         "depends on it");
+  }
+}
+
 void finish_validation(const Problem& p, CalibrationResult& r, const Eigen::VectorXd& achieved,
                        const Eigen::VectorXd& tolerance) {
   r.achieved = achieved;
@@ -450,6 +475,7 @@ CalibrationResult calibrate_paper(const Problem& p, const ForwardModel& model, c
     scatter_warnings(p, r);
   }
   propagate_uncertainty(p, r.surfaces, r);
+  determination_warnings(p, r);
   // The mean of the realisations at the solution misses the measurement by its own scatter
   // and by the design's offset the surfaces do not show (tolerances above; both empty, and
   // the tolerance u, without replicates).
@@ -563,6 +589,7 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
   }
   r.runs[best].role = r.runs[best].role == "design" ? "design+validation" : "validation";
   propagate_uncertainty(p, r.surfaces, r);
+  determination_warnings(p, r);
   finish_validation(p, r, r.runs[best].y, tolerance);
   if (!r.within_uncertainty) {
     // Is the target reachable at all inside the bounds (judged on the last local surfaces)?

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 #include <toml++/toml.h>
+#include <unistd.h>
 
 #include "analysis/mohr_coulomb.hpp"
 #include "io/fingerprint.hpp"
@@ -19,8 +20,12 @@ namespace colza::calibration {
 
 namespace fs = std::filesystem;
 
-
 namespace {
+
+// A scratch name no other process uses: calibrations that share one runs directory
+// (--runs) may compute the same run at the same time; each writes its own scratch file and
+// the last rename wins with identical content (same fingerprint, same bits).
+std::string process_unique(const std::string& name) { return name + "." + std::to_string(::getpid()); }
 
 std::string num17(double v) { return format_significant(v, 17); }  // round-trips a double
 
@@ -67,8 +72,9 @@ std::pair<std::string, std::string> DemModel::shared_packing(int replicate) {
       Progress quiet(false);
       const auto t0 = std::chrono::steady_clock::now();
       const OedometerResult r = run_oedometer(c, quiet);
-      write_packing((dir / "packing.txt.tmp").string(), r.settled);
-      fs::rename(dir / "packing.txt.tmp", file);
+      const fs::path tmp = dir / process_unique("packing.txt.tmp");
+      write_packing(tmp.string(), r.settled);
+      fs::rename(tmp, file);
       write_text_atomically(dir / "config.toml", c.resolved_toml);
       if (verbose_)
         std::printf("  shared packing (seed %llu): %zu particles settled at the design centre (%.1f s) -> %s\n",
@@ -118,8 +124,9 @@ std::shared_ptr<const ShearSample> DemModel::shear_sample(const RunConfig& c) {
       fs::create_directories(dir);
       const auto t0 = std::chrono::steady_clock::now();
       const ShearSample s = prepare_shear_sample(c, quiet);
-      write_packing((dir / "packing.txt.tmp").string(), s.particles);
-      fs::rename(dir / "packing.txt.tmp", file);
+      const fs::path tmp = dir / process_unique("packing.txt.tmp");
+      write_packing(tmp.string(), s.particles);
+      fs::rename(tmp, file);
       if (verbose_)
         std::printf("  shear sample: %zu particles settled (%.1f s) -> %s\n", s.particles.size(),
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), file.c_str());
@@ -221,7 +228,7 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
       outputs = run_shear_outputs(c, wall);
     } else {
       // The curve is written into the staging folder's final place after the summary check.
-      const fs::path tmp = runs_ / (".tmp-" + fp);
+      const fs::path tmp = runs_ / process_unique(".tmp-" + fp);
       fs::remove_all(tmp);
       outputs = run_oedometer_outputs(c, tmp, wall);
       OutputStaging out(dir, true);

@@ -1,6 +1,7 @@
 #include "calibration/report.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <sstream>
 
@@ -96,7 +97,7 @@ nlohmann::json calibration_summary(const Problem& p, const CalibrationResult& r,
                         {"targets", std::vector<double>(r.runs[k].y.data(), r.runs[k].y.data() + r.runs[k].y.size())}};
     if (k < ctx.run_ids.size()) {
       j["id"] = ctx.run_ids[k];
-      j["summary"] = "runs/" + ctx.run_ids[k] + "/summary.json";
+      j["summary"] = (std::filesystem::path(ctx.runs_dir) / ctx.run_ids[k] / "summary.json").string();
       j["reused"] = static_cast<bool>(ctx.run_reused[k]);
       j["wall_seconds"] = ctx.run_wall_seconds[k];
       reused += ctx.run_reused[k] ? 1 : 0;
@@ -143,7 +144,7 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
     for (Eigen::Index i = 0; i < r.runs[k].y.size(); ++i) o << g(r.runs[k].y[i]) << " | ";
     o << g(normalised_misfit(p, r.runs[k].y, run_tolerance), 3) << " | ";
     if (k < ctx.run_ids.size())
-      o << "`runs/" << ctx.run_ids[k] << "` " << g(ctx.run_wall_seconds[k], 3) << " s" << (ctx.run_reused[k] ? " (reused)" : "");
+      o << "`" << (std::filesystem::path(ctx.runs_dir) / ctx.run_ids[k]).string() << "` " << g(ctx.run_wall_seconds[k], 3) << " s" << (ctx.run_reused[k] ? " (reused)" : "");
     o << " |\n";
   }
 

@@ -11,6 +11,7 @@ namespace colza::calibration {
 
 struct ReportContext {
   std::string stage, spec_file, title, measured_file, notes;
+  std::string runs_dir = "runs";          // where the DEM runs are kept, as the report names it (--runs)
   std::vector<std::string> run_ids;       // per result.runs entry (DEM fingerprints), may be empty
   std::vector<bool> run_reused;
   std::vector<double> run_wall_seconds;

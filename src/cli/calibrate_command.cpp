@@ -77,7 +77,8 @@ int calibrate_command(const CalibrateOptions& opt) {
   }
   const fs::path out(opt.out_dir);
   fs::create_directories(out);
-  DemModel dem(spec, out / "runs", verbose);
+  const fs::path runs = opt.runs_dir.empty() ? out / "runs" : fs::path(opt.runs_dir);
+  DemModel dem(spec, runs, verbose);
   const ForwardModel model = [&dem](const Eigen::VectorXd& x) { return dem(x); };
   LoopOptions loop;
   loop.jobs = opt.jobs;
@@ -91,6 +92,7 @@ int calibrate_command(const CalibrateOptions& opt) {
 
   ReportContext ctx;
   ctx.stage = to_string(spec.stage);
+  ctx.runs_dir = opt.runs_dir.empty() ? "runs" : runs.string();
   ctx.spec_file = opt.spec_path;
   ctx.title = spec.title;
   ctx.measured_file = spec.measured_file;

@@ -69,6 +69,10 @@ int main(int argc, char** argv) {
   calibrate->add_option("--out", cal.out_dir, "output directory (design runs are kept and reused in DIR/runs)")->required();
   calibrate->add_option("--mode", cal.mode, "paper (fixed design, default) | sequential (trust-region refinement)")
       ->check(CLI::IsMember({"paper", "sequential"}));
+  calibrate->add_option("--runs", cal.runs_dir,
+                        "where DEM runs are kept and reused (default: OUT/runs); calibrations of the same model "
+                        "(the other mode, other targets) can share one: a run is reused when its resolved config, "
+                        "seed and packing are the same");
   calibrate->add_option("--jobs", cal.jobs, "design runs run concurrently")->check(CLI::PositiveNumber);
   calibrate->add_option("--threads", cal.threads,
                         "worker threads per design run (default: OMP_NUM_THREADS, else the cores divided by --jobs)")

@@ -110,6 +110,36 @@ TEST_F(CalibrateCompression, SequentialModeRecoversTheParameters) {
   EXPECT_LE(s["runs_used"].get<int>(), 10);
 }
 
+TEST_F(CalibrateCompression, ASharedRunsDirectoryServesTheOtherMode) {
+  // --runs R: both modes keep their runs in R. The sequential mode's first start point (the
+  // centre of the range, 450 kN/m, 0.3) is a point of the paper's design, so it is reused.
+  const fs::path runs = dir_ / "shared-runs";
+  const std::string spec = " --spec " + (dir_ / "spec.toml").string() + " --runs " + runs.string();
+  ASSERT_EQ(run_colza("calibrate compression --quiet --jobs 2" + spec + " --out " + (dir_ / "shared-paper").string())
+                .exit_code, 0);
+  const auto paper = read_json(dir_ / "shared-paper" / "summary.json");
+  EXPECT_EQ(paper["runs_reused"].get<int>(), 0);
+  EXPECT_FALSE(fs::exists(dir_ / "shared-paper" / "runs"));
+  for (const auto& run : paper["runs"]) {
+    const fs::path summary = run["summary"].get<std::string>();
+    EXPECT_EQ(summary.parent_path().parent_path(), runs);
+    EXPECT_TRUE(fs::exists(summary)) << summary;
+  }
+  ASSERT_EQ(run_colza("calibrate compression --quiet --mode sequential" + spec + " --out " +
+                      (dir_ / "shared-sequential").string())
+                .exit_code, 0);
+  const auto seq = read_json(dir_ / "shared-sequential" / "summary.json");
+  ASSERT_GE(seq["runs"].size(), 1u);
+  EXPECT_TRUE(seq["runs"][0]["reused"].get<bool>()) << seq["runs"][0].dump();
+  EXPECT_GE(seq["runs_reused"].get<int>(), 1);
+  // The same runs as without --runs: the same solution as the paper mode's own test.
+  const auto own = run_colza("calibrate compression --quiet --jobs 2 --spec " + (dir_ / "spec.toml").string() +
+                             " --out " + (dir_ / "unshared-paper").string());
+  ASSERT_EQ(own.exit_code, 0) << own.stderr_text;
+  EXPECT_EQ(read_json(dir_ / "unshared-paper" / "summary.json")["parameters"][0]["value"].get<double>(),
+            paper["parameters"][0]["value"].get<double>());
+}
+
 TEST_F(CalibrateCompression, BadMeasuredDataAreClearErrors) {
   // A curve that never reaches the fit range.
   write_file(dir_ / "short.csv", "displacement,force\n0,0\n0.001,100\n0.002,300\n");

@@ -246,3 +246,36 @@ TEST(ResponseSurface, AutoTakesTheQuadraticOnAGridAndThePlaneOnAStar) {
   EXPECT_EQ(ResponseSurface::fit(S, ys, SurfaceKind::kAuto, sc2).kind(), SurfaceKind::kPlane);
   EXPECT_THROW(ResponseSurface::fit(S, ys, SurfaceKind::kQuadratic, sc2), SurfaceError);
 }
+
+TEST(CalibrationIdentity, AParameterTheTargetsHardlyFeelIsReportedAsNotDetermined) {
+  // Planes close to what the full-size box gives at the paper's 30 mm protocol (session 6,
+  // the five design runs of data/calibration/shear.toml): C = -1600 + 2567 Cn + 80 Cs (Pa),
+  // tan(Phi) = 0.45 - 0.027 Cn - 0.005 Cs, with uncertainties 550 Pa and 0.016 (the
+  // realisation scatter). J^-1 = [[-0.005, -80], [0.027, 2567]] / det, det = -10.675, so
+  // sigma(Cs) = sqrt((0.027 * 550)^2 + (2567 * 0.016)^2) / 10.675 = 4.09 N (2 sigma far wider
+  // than the range 2 .. 4 N) and sigma(Cn) = sqrt((0.005 * 550)^2 + (80 * 0.016)^2) / 10.675
+  // = 0.284 N (4 sigma = 1.14 N, inside the range 0.5 .. 2.5 N).
+  const ForwardModel model = [](const Eigen::VectorXd& x) {
+    return Eigen::Vector2d(-1600.0 + 2567.0 * x[0] + 80.0 * x[1], 0.45 - 0.027 * x[0] - 0.005 * x[1]).eval();
+  };
+  Problem p = shear_problem();
+  const Eigen::VectorXd truth = model(Eigen::Vector2d(1.8, 3.3));
+  p.targets = {{"cohesion", "Pa", truth[0], 550.0}, {"tan_phi", "-", truth[1], 0.016}};
+  const CalibrationResult r = calibrate_paper(p, model, {});
+  EXPECT_NEAR(r.sigma[1], 4.09, 0.01);
+  EXPECT_NEAR(r.sigma[0], 0.284, 0.001);
+  std::string cs, cn;
+  for (const auto& w : r.warnings) {
+    if (w.rfind("Cs is not determined", 0) == 0) cs = w;
+    if (w.rfind("Cn is not determined", 0) == 0) cn = w;
+  }
+  EXPECT_NE(cs.find("+/- 2 sigma = +/- 8.1"), std::string::npos) << cs;
+  EXPECT_NE(cs.find("design range 2 .. 4 N"), std::string::npos) << cs;
+  EXPECT_NE(cs.find("cohesion by 160 Pa (0.290909 uncertainties), tan_phi by 0.01 - (0.625 uncertainties)"),
+            std::string::npos) << cs;
+  EXPECT_TRUE(cn.empty()) << cn;
+  // A well-determined problem (the linear compression model) says nothing of the kind.
+  const CalibrationResult ok =
+      calibrate_paper(compression_problem(kA * Eigen::Vector2d(437e3, 0.34) + kB, Eigen::Vector2d(1e4, 2e6)), linear_model, {});
+  for (const auto& w : ok.warnings) EXPECT_EQ(w.find("is not determined"), std::string::npos) << w;
+}
