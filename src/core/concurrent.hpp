@@ -22,13 +22,16 @@ namespace colza {
 // otherwise start from OpenMP's default (one per core), so with --jobs 2 each extra job ran
 // its force loop on all cores, oversubscribing them (a 1263-sphere shear load went from 2 s
 // to > 5 min on 2 busy cores, spinning at the OpenMP barriers).
+// `threads_per_job` > 0 gives each job that many OpenMP threads instead of the caller's.
 template <class Job>
-void run_concurrently(std::size_t count, int threads, Job&& job) {
+void run_concurrently(std::size_t count, int threads, Job&& job, int threads_per_job = 0) {
   std::mutex mutex;
   std::exception_ptr failure;
   std::size_t next = 0;
 #ifdef _OPENMP
-  const int omp_threads = omp_get_max_threads();
+  const int omp_threads = threads_per_job > 0 ? threads_per_job : omp_get_max_threads();
+#else
+  (void)threads_per_job;
 #endif
   auto worker = [&]() {
 #ifdef _OPENMP
@@ -55,6 +58,15 @@ void run_concurrently(std::size_t count, int threads, Job&& job) {
   worker();
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
+}
+
+// The OpenMP threads a run started here would use (1 without OpenMP).
+inline int worker_threads_here() {
+#ifdef _OPENMP
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
 }
 
 // A value made once per key (a settled packing per seed, say): callers asking for different
