@@ -9,6 +9,7 @@
 
 #include "analysis/mohr_coulomb.hpp"
 #include "core/concurrent.hpp"
+#include "core/version.hpp"
 #include "io/fingerprint.hpp"
 #include "io/output_dir.hpp"
 #include "io/packing_file.hpp"
@@ -231,13 +232,29 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
       rec.outputs = s["outputs"];
       rec.reused = true;
       rec.wall_seconds = s.value("wall_seconds", 0.0);
+      rec.made_by = s.value("colza_revision", "unknown");
     }
   }
   if (!rec.reused) {
     double wall = 0.0;
     nlohmann::json outputs;
+    // The run's summary.json: what it is (fingerprint, config, parameters, code revision)
+    // and its outputs; written last, it marks the run as finished.
+    auto summary_of = [&] {
+      nlohmann::json s = {{"fingerprint", fp},         {"stage", to_string(spec_.stage)}, {"outputs", outputs},
+                          {"wall_seconds", wall},      {"config_toml", c.resolved_toml},
+                          {"colza_revision", git_revision()}};
+      s["parameters"] = nlohmann::json::object();
+      for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j)
+        s["parameters"][spec_.problem.parameters[j].key] = x[j];
+      if (spec_.shared_packing) s["packing_file"] = c.oedometer.packing_file;
+      return s;
+    };
     if (spec_.stage == Stage::kShear) {
       outputs = run_shear_outputs(c, wall);
+      OutputStaging out(dir, true);
+      write_json(out.path("summary.json"), summary_of());
+      out.commit();
     } else {
       // The curve is written into the staging folder's final place after the summary check.
       const fs::path tmp = runs_ / process_unique(".tmp-" + fp);
@@ -246,25 +263,12 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
       OutputStaging out(dir, true);
       fs::rename(tmp / "curve.csv", out.path("curve.csv"));
       fs::remove_all(tmp);
-      nlohmann::json s = {{"fingerprint", fp}, {"stage", to_string(spec_.stage)}, {"outputs", outputs},
-                          {"wall_seconds", wall}, {"config_toml", c.resolved_toml}};
-      s["parameters"] = nlohmann::json::object();
-      for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j) s["parameters"][spec_.problem.parameters[j].key] = x[j];
-      if (spec_.shared_packing) s["packing_file"] = c.oedometer.packing_file;
-      write_json(out.path("summary.json"), s);
-      out.commit();
-    }
-    if (spec_.stage == Stage::kShear) {
-      OutputStaging out(dir, true);
-      nlohmann::json s = {{"fingerprint", fp}, {"stage", to_string(spec_.stage)}, {"outputs", outputs},
-                          {"wall_seconds", wall}, {"config_toml", c.resolved_toml}};
-      s["parameters"] = nlohmann::json::object();
-      for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j) s["parameters"][spec_.problem.parameters[j].key] = x[j];
-      write_json(out.path("summary.json"), s);
+      write_json(out.path("summary.json"), summary_of());
       out.commit();
     }
     rec.outputs = outputs;
     rec.wall_seconds = wall;
+    rec.made_by = git_revision();
   }
   rec.y = targets_from(rec.outputs, fp);
   if (verbose_) {

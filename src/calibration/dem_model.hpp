@@ -28,6 +28,7 @@ struct DemRunRecord {
   int replicate = 0;        // realisation: seed = config seed + replicate
   bool reused = false;
   double wall_seconds = 0;  // of the original run
+  std::string made_by;      // git revision of the colza that ran it ("unknown" for runs older than the field)
   nlohmann::json outputs;
 };
 

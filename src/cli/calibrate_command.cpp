@@ -11,6 +11,7 @@
 #include "calibration/report.hpp"
 #include "calibration/spec.hpp"
 #include "config/config_error.hpp"
+#include "core/version.hpp"
 #include "io/output_dir.hpp"
 #include "io/summary.hpp"
 
@@ -114,6 +115,18 @@ int calibrate_command(const CalibrateOptions& opt) {
     ctx.run_wall_seconds.push_back(rec ? rec->wall_seconds : 0.0);
   }
   ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // A run's fingerprint holds its config, not the code: say which reused runs another
+  // revision of colza made (valid only if the physics did not change in between).
+  std::string other_revisions;
+  for (const auto& rec : dem.records())
+    if (rec.reused && rec.made_by != git_revision())
+      other_revisions += (other_revisions.empty() ? "" : ", ") + rec.id + " (" + rec.made_by + ")";
+  if (!other_revisions.empty())
+    ctx.extra_warnings.push_back("reused runs made by another revision of colza than this one (" +
+                                 std::string(git_revision()) + "): " + other_revisions +
+                                 "; they stand only if the physics did not change in between: remove them from " +
+                                 runs.string() + " to run them again");
+  if (!other_revisions.empty()) std::fprintf(stderr, "colza: warning: %s\n", ctx.extra_warnings.back().c_str());
 
   OutputStaging staging(out, /*overwrite=*/true);  // an earlier summary was refused above unless --force
   write_json(staging.path("summary.json"), calibration_summary(spec.problem, result, ctx));

@@ -139,6 +139,20 @@ TEST_F(CalibrateCompression, ASharedRunsDirectoryServesTheOtherMode) {
   ASSERT_EQ(own.exit_code, 0) << own.stderr_text;
   EXPECT_EQ(read_json(dir_ / "unshared-paper" / "summary.json")["parameters"][0]["value"].get<double>(),
             paper["parameters"][0]["value"].get<double>());
+  // A reused run that another revision of colza made is named in a warning.
+  const fs::path first = paper["runs"][0]["summary"].get<std::string>();
+  auto j = read_json(first);
+  EXPECT_TRUE(j.contains("colza_revision"));
+  j["colza_revision"] = "0123abc";
+  write_file(first, j.dump());
+  const CliResult again = run_colza("calibrate compression --quiet --force" + spec + " --out " +
+                                    (dir_ / "shared-paper").string());
+  ASSERT_EQ(again.exit_code, 0) << again.stderr_text;
+  const std::string id = first.parent_path().filename().string();
+  EXPECT_NE(again.stderr_text.find("reused runs made by another revision of colza"), std::string::npos) << again.stderr_text;
+  EXPECT_NE(again.stderr_text.find(id + " (0123abc)"), std::string::npos) << again.stderr_text;
+  const auto warned = read_json(dir_ / "shared-paper" / "summary.json")["warnings"].dump();
+  EXPECT_NE(warned.find(id + " (0123abc)"), std::string::npos) << warned;
 }
 
 TEST_F(CalibrateCompression, BadMeasuredDataAreClearErrors) {
