@@ -29,6 +29,13 @@ namespace {
 // the last rename wins with identical content (same fingerprint, same bits).
 std::string process_unique(const std::string& name) { return name + "." + std::to_string(::getpid()); }
 
+// A shear design run's curve at normal stress sigma (Pa): load-<sigma>Pa.csv.
+std::string shear_curve_file_name(double sigma) {
+  char b[64];
+  std::snprintf(b, sizeof b, "load-%.0fPa.csv", sigma);
+  return b;
+}
+
 std::string num17(double v) { return format_significant(v, 17); }  // round-trips a double
 
 Scenario scenario_of(const Spec& s) { return s.stage == Stage::kShear ? Scenario::kShear : Scenario::kOedometer; }
@@ -162,12 +169,13 @@ nlohmann::json DemModel::run_oedometer_outputs(const RunConfig& c, const fs::pat
   return out;
 }
 
-nlohmann::json DemModel::run_shear_outputs(const RunConfig& c, double& wall) {
+nlohmann::json DemModel::run_shear_outputs(const RunConfig& c, double& wall, std::vector<Table>& curves) {
   const auto sample = shear_sample(c);
   const auto t0 = std::chrono::steady_clock::now();
   const std::size_t n = spec_.loads.size();
   std::vector<double> tau(n);
   std::vector<nlohmann::json> load_json(n);
+  curves.assign(n, Table{});
   // The loads run side by side when this run has a thread per load or more (each load then
   // gets threads / loads): two loads at one thread each beat one after the other at two
   // (the force loop scales by ~1.8 on two threads). Same bits at any thread count.
@@ -179,6 +187,7 @@ nlohmann::json DemModel::run_shear_outputs(const RunConfig& c, double& wall) {
         Progress quiet(false);
         const ShearLoadResult r = run_shear_load(c, *sample, spec_.loads[k], quiet);
         tau[k] = r.shear_strength;
+        curves[k] = r.curve;
         load_json[k] = {{"normal_stress", spec_.loads[k]},
                         {"shear_strength", r.shear_strength},
                         {"peak_shear_stress", r.peak_shear_stress},
@@ -251,8 +260,13 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
       return s;
     };
     if (spec_.stage == Stage::kShear) {
-      outputs = run_shear_outputs(c, wall);
+      // Each load's whole curve is kept (load-<sigma>Pa.csv), so that other strength
+      // definitions can be read from the runs later.
+      std::vector<Table> curves;
+      outputs = run_shear_outputs(c, wall, curves);
       OutputStaging out(dir, true);
+      for (std::size_t k = 0; k < curves.size(); ++k)
+        write_csv(out.path(shear_curve_file_name(spec_.loads[k])), curves[k]);
       write_json(out.path("summary.json"), summary_of());
       out.commit();
     } else {

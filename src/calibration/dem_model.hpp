@@ -1,7 +1,8 @@
 // The DEM as a calibration forward model: parameters -> targets by running colza's
 // oedometer (density: bulk density; compression: c1, c2 of F = c0 + c1 s + c2 s^2) or a
 // shear series over the spec's loads (shear: C and tan(Phi) of the Mohr-Coulomb line).
-// Every run is kept in <runs>/<fingerprint>/summary.json, the fingerprint being FNV-1a 64
+// Every run is kept in <runs>/<fingerprint>/summary.json (with the curve: curve.csv, or
+// load-<sigma>Pa.csv per shear load), the fingerprint being FNV-1a 64
 // of the run's full configuration as used (model config + spec overrides + parameters +
 // shared packing); a calibration started again reuses finished runs. Thread-safe.
 // Realisation k >= 1 of a point (realisation scatter, calibrate.hpp) is the same run with
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "calibration/spec.hpp"
+#include "io/table.hpp"
 #include "core/concurrent.hpp"
 #include "scenario/shear_box.hpp"
 
@@ -48,7 +50,7 @@ class DemModel {
   RunConfig config_for(const Eigen::VectorXd& x, int replicate, std::string& fingerprint);
   std::vector<std::string> seed_override(int replicate) const;
   nlohmann::json run_oedometer_outputs(const RunConfig& c, const std::filesystem::path& dir, double& wall);
-  nlohmann::json run_shear_outputs(const RunConfig& c, double& wall);
+  nlohmann::json run_shear_outputs(const RunConfig& c, double& wall, std::vector<Table>& curves);
   std::shared_ptr<const ShearSample> shear_sample(const RunConfig& c);
   std::pair<std::string, std::string> shared_packing(int replicate);  // (path, fingerprint)
   Eigen::VectorXd targets_from(const nlohmann::json& outputs, const std::string& id) const;

@@ -296,7 +296,8 @@ TEST(CalibrateShearCurves, BadCurvesAreClearErrorsWithExitCode2) {
 TEST(CalibrateShearLoads, SideBySideLoadsGiveTheSameRunsAsOneAfterTheOther) {
   // With --threads 2 and one job, a shear design run runs its two loads side by side (one
   // thread each); with --threads 1 one after the other. The runs' outputs must be the same
-  // bits (small box, 1 mm of shear: a check of the plumbing, not of the physics). The
+  // bits (small box, 1 mm of shear: a check of the plumbing, not of the physics), and each
+  // load's curve is kept in the run's directory. The
   // measured line is the paper's (out of this design's reach: exit 2 after the design runs).
   const fs::path dir = scratch_dir("calibrate-shear-loads");
   fs::create_directories(dir);
@@ -315,8 +316,11 @@ TEST(CalibrateShearLoads, SideBySideLoadsGiveTheSameRunsAsOneAfterTheOther) {
     run_colza("calibrate shear --quiet --jobs 1 --threads " + std::to_string(threads) + " --spec " + spec.string() +
               " --out " + out.string());
     for (const auto& e : fs::directory_iterator(out / "runs"))
-      if (fs::exists(e.path() / "summary.json"))
+      if (fs::exists(e.path() / "summary.json")) {
         outputs[threads - 1][e.path().filename().string()] = read_json(e.path() / "summary.json")["outputs"];
+        for (const char* curve : {"load-25750Pa.csv", "load-78750Pa.csv"})  // each load's curve is kept
+          EXPECT_NE(read_file(e.path() / curve).find("shear_displacement"), std::string::npos) << e.path() / curve;
+      }
   }
   EXPECT_EQ(outputs[0].size(), 3u);
   EXPECT_EQ(outputs[0], outputs[1]);
