@@ -43,4 +43,21 @@ class ShearStrengthMean {
 ShearStrengthMean shear_strength_of_curve(const std::vector<double>& displacement,
                                           const std::vector<double>& shear_stress, StrengthWindow window);
 
+// Peak strength: the largest mean shear stress over a trailing interval of shear
+// displacement of width w,
+//
+//   tau_peak = max_i (1 / N_i) sum_{k : d_i - w <= d_k <= d_i} tau_k        (Pa),
+//
+// over the rows i whose interval lies on the curve (d_i - w >= d_0). Averaging over w (say
+// 1 mm) makes the peak a property of the curve, not of one noisy sample; one definition for
+// a measured curve's rows and the simulation's recorded rows (every record_interval steps).
+// Before the peak the bonds hold; the stationary window after it (above) sees few of them.
+struct ShearPeak {
+  double value = 0.0;         // Pa
+  double displacement = 0.0;  // m, the end d_i of the interval with the largest mean
+  std::size_t samples = 0;    // rows in that interval; 0 = the curve is shorter than w
+};
+ShearPeak peak_shear_strength(const std::vector<double>& displacement, const std::vector<double>& shear_stress,
+                              double width);
+
 }  // namespace colza

@@ -8,6 +8,8 @@
 #include <unistd.h>
 
 #include "analysis/mohr_coulomb.hpp"
+#include "calibration/measured_csv.hpp"
+#include "calibration/measured_shear_curve.hpp"
 #include "core/concurrent.hpp"
 #include "core/version.hpp"
 #include "io/fingerprint.hpp"
@@ -226,6 +228,30 @@ Eigen::VectorXd DemModel::targets_from(const nlohmann::json& out, const std::str
   return y;
 }
 
+Eigen::VectorXd DemModel::peak_targets(const fs::path& dir, const std::string& id) const {
+  // C and tan(Phi) of the line through the peak strengths of the run's kept load curves,
+  // by the same definition as the measured curves' (StrengthDefinition).
+  std::vector<double> tau;
+  for (double sigma : spec_.loads) {
+    const fs::path file = dir / shear_curve_file_name(sigma);
+    if (!fs::exists(file))
+      throw CalibrationError("measured.strength", "DEM run " + id + " keeps no load curves (made by a colza older "
+                             "than the peak strength): remove " + dir.string() + " to run it again, or use "
+                             "strength = \"window\"");
+    const auto cols = read_csv_columns(file.string(), {kShearDisplacementColumn, kShearStressColumn}, spec_.file,
+                                       "measured.strength");
+    std::size_t samples = 0;
+    double at = 0.0;
+    tau.push_back(curve_strength(cols[0], cols[1], spec_.strength, samples, at));
+    if (samples < 2)
+      throw CalibrationError("measured.peak_width", "DEM run " + id + ": " + std::to_string(samples) +
+                             " row(s) of " + file.string() + " in the peak's interval: widen measured.peak_width "
+                             "or record the curve more often (shear_box.record_interval)");
+  }
+  const MohrCoulombFit mc = fit_mohr_coulomb(spec_.loads, tau);
+  return Eigen::Vector2d(mc.cohesion, mc.slope);
+}
+
 Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
   std::string fp;
   const RunConfig c = config_for(x, replicate, fp);
@@ -284,7 +310,7 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
     rec.wall_seconds = wall;
     rec.made_by = git_revision();
   }
-  rec.y = targets_from(rec.outputs, fp);
+  rec.y = spec_.stage == Stage::kShear && spec_.strength.peak ? peak_targets(dir, fp) : targets_from(rec.outputs, fp);
   if (verbose_) {
     std::string line = "  run " + fp + ":";
     for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j) {

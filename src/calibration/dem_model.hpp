@@ -54,6 +54,7 @@ class DemModel {
   std::shared_ptr<const ShearSample> shear_sample(const RunConfig& c);
   std::pair<std::string, std::string> shared_packing(int replicate);  // (path, fingerprint)
   Eigen::VectorXd targets_from(const nlohmann::json& outputs, const std::string& id) const;
+  Eigen::VectorXd peak_targets(const std::filesystem::path& run_dir, const std::string& id) const;  // shear, strength = "peak"
 
   const Spec& spec_;
   std::filesystem::path runs_;

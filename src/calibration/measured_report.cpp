@@ -38,17 +38,23 @@ nlohmann::json measured_data_summary(const Spec& s) {
         for (const auto& [sigma, tau] : s.measured_points)
           m["strengths"].push_back({{"normal_stress", sigma}, {"shear_strength", tau}});
       } else {
-        const auto& w = s.measured_curves.front().window;
-        m["strength_window"] = {w.start, w.end};
-        m["strength_definition"] = "mean shear stress of the curve's rows with shear_displacement in the strength window";
-        for (const auto& c : s.measured_curves)
-          m["strengths"].push_back({{"normal_stress", c.normal_stress},
-                                    {"shear_strength", c.shear_strength},
-                                    {"file", c.file},
-                                    {"rows", c.rows},
-                                    {"rows_in_window", c.window_points},
-                                    {"max_displacement", c.max_displacement}});
+        for (const auto& c : s.measured_curves) {
+          nlohmann::json j = {{"normal_stress", c.normal_stress},
+                              {"shear_strength", c.shear_strength},
+                              {"file", c.file},
+                              {"rows", c.rows},
+                              {"rows_in_window", c.window_points},
+                              {"max_displacement", c.max_displacement}};
+          if (s.strength.peak) j["peak_displacement"] = c.peak_displacement;
+          m["strengths"].push_back(j);
+        }
       }
+      m["strength"] = s.strength.peak ? "peak" : "window";
+      if (s.strength.peak)
+        m["peak_width"] = s.strength.peak_width;
+      else
+        m["strength_window"] = {s.strength.window.start, s.strength.window.end};
+      m["strength_definition"] = s.strength.describe();
       m["line_r2"] = s.measured_fit_r2;
       m["loads_simulated"] = s.loads;
       break;
@@ -75,18 +81,22 @@ std::string measured_data_section(const Spec& s) {
       break;
     case Stage::kShear:
       if (s.measured_curves.empty()) {
-        o << "Shear strengths read from `" << s.measured_file << "`:\n\n| normal stress (Pa) | shear strength (Pa) |\n"
+        o << "Shear strengths read from `" << s.measured_file << "` (taken as the " << s.strength.describe()
+          << "):\n\n| normal stress (Pa) | shear strength (Pa) |\n"
           << "|---|---|\n";
         for (const auto& [sigma, tau] : s.measured_points) o << "| " << g(sigma) << " | " << g(tau) << " |\n";
       } else {
-        const auto& w = s.measured_curves.front().window;
-        o << "Shear strengths derived from the measured curves as for the simulated ones: the mean shear stress of "
-          << "the rows with shear displacement in the strength window " << g(w.start) << " .. " << g(w.end)
-          << " m.\n\n| normal stress (Pa) | shear strength (Pa) | curve | rows in window / rows | curve ends at (m) |\n"
-          << "|---|---|---|---|---|\n";
-        for (const auto& c : s.measured_curves)
+        o << "Shear strengths derived from the measured curves as for the simulated ones: the "
+          << s.strength.describe() << ".\n\n| normal stress (Pa) | shear strength (Pa) | curve | rows in "
+          << (s.strength.peak ? "the peak's interval" : "window") << " / rows | curve ends at (m) |"
+          << (s.strength.peak ? " peak's interval ends at (m) |" : "") << "\n|---|---|---|---|---|"
+          << (s.strength.peak ? "---|" : "") << "\n";
+        for (const auto& c : s.measured_curves) {
           o << "| " << g(c.normal_stress) << " | " << g(c.shear_strength) << " | `" << c.file << "` | "
-            << c.window_points << " / " << c.rows << " | " << g(c.max_displacement) << " |\n";
+            << c.window_points << " / " << c.rows << " | " << g(c.max_displacement) << " |";
+          if (s.strength.peak) o << " " << g(c.peak_displacement) << " |";
+          o << "\n";
+        }
       }
       o << "\nC and tan(Phi) are the least-squares line through these points (R^2 = " << g(s.measured_fit_r2, 4)
         << ").\n";

@@ -21,9 +21,40 @@ constexpr double kUnevenStepRatio = 1.5;
 
 }  // namespace
 
+std::string StrengthDefinition::describe() const {
+  if (peak)
+    return "peak strength: the largest mean shear stress of the rows within a trailing shear displacement interval "
+           "of " + fmt(peak_width) + " m";
+  return "mean shear stress of the rows with shear displacement in the strength window " + fmt(window.start) + " .. " +
+         fmt(window.end) + " m";
+}
+
+double curve_strength(const std::vector<double>& displacement, const std::vector<double>& shear_stress,
+                      const StrengthDefinition& definition, std::size_t& samples, double& peak_displacement) {
+  if (definition.peak) {
+    const ShearPeak p = peak_shear_strength(displacement, shear_stress, definition.peak_width);
+    samples = p.samples;
+    peak_displacement = p.displacement;
+    return p.value;
+  }
+  const ShearStrengthMean mean = shear_strength_of_curve(displacement, shear_stress, definition.window);
+  samples = mean.samples();
+  peak_displacement = 0.0;
+  return mean.value();
+}
+
 MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double normal_stress, StrengthWindow window,
                                              const std::string& spec_file, const std::string& key,
                                              std::vector<std::string>& warnings) {
+  StrengthDefinition mean;
+  mean.window = window;
+  return read_measured_shear_curve(csv, normal_stress, mean, spec_file, key, warnings);
+}
+
+MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double normal_stress,
+                                             const StrengthDefinition& strength, const std::string& spec_file,
+                                             const std::string& key, std::vector<std::string>& warnings) {
+  const StrengthWindow window = strength.window;
   if (!std::filesystem::exists(csv))
     throw ConfigError(spec_file, key, "the measured shear curve " + csv + " does not exist");
   std::vector<std::size_t> lines;
@@ -33,6 +64,7 @@ MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double norm
   MeasuredShearCurve c;
   c.file = csv;
   c.normal_stress = normal_stress;
+  c.strength = strength;
   c.window = window;
   c.rows = d.size();
   if (d.empty()) throw ConfigError(spec_file, key, csv + ": the curve has no rows after its header line");
@@ -44,6 +76,19 @@ MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double norm
                                             "): the displacement must increase strictly along the curve (sort the "
                                             "rows; remove repeated rows and any unloading part)");
   c.max_displacement = d.back();
+  if (strength.peak) {
+    c.shear_strength = curve_strength(d, tau, strength, c.window_points, c.peak_displacement);
+    if (c.window_points == 0)
+      throw ConfigError(spec_file, key, csv + ": the curve spans " + fmt(d.back() - d.front()) +
+                                            " m of shear displacement, less than the peak width " +
+                                            fmt(strength.peak_width) + " m (measured.peak_width): supply the whole "
+                                            "curve, or narrow the peak width");
+    if (c.window_points < 2)
+      throw ConfigError(spec_file, key, csv + ": 1 row inside the peak's interval of " + fmt(strength.peak_width) +
+                                            " m; at least 2 are needed for a mean shear stress: supply a curve "
+                                            "sampled more densely, or widen measured.peak_width");
+    return c;
+  }
   if (c.max_displacement < window.end)
     throw ConfigError(spec_file, key, csv + ": the curve ends at a shear displacement of " + fmt(c.max_displacement) +
                                           " m, but the strength window needs it to reach " + fmt(window.end) +

@@ -299,6 +299,18 @@ Spec read_spec(const std::string& path) {
       m.fail("results", "missing: name the measured shear strengths (results = \"file.csv\", columns normal_stress, "
                         "shear_strength) or one curve per normal load ([[measured.curves]] with normal_stress and file)");
     const std::string source_key = has_results ? "results" : "curves";
+    // Which strength: the paper's mean over the stationary window, or the peak.
+    s.strength.window = {s.base.shear_box.strength_window_start, s.base.shear_box.strength_window_end};
+    const std::string kind = m.string("strength", "window");
+    if (kind == "peak")
+      s.strength.peak = true;
+    else if (kind != "window")
+      m.fail("strength", "must be \"window\" (the mean over shear_box.strength_window_start .. _end, the paper's) or "
+                         "\"peak\" (the largest mean over measured.peak_width), got \"" + kind + "\"");
+    if (m.has("peak_width")) {
+      if (!s.strength.peak) m.fail("peak_width", "only with strength = \"peak\"");
+      s.strength.peak_width = m.positive("peak_width");
+    }
     std::vector<double> sigma, tau;
     if (has_results) {
       s.measured_file = resolve(path, m.string("results", "", true));
@@ -314,7 +326,6 @@ Spec read_spec(const std::string& path) {
       const toml::array* curves = m.get("curves")->as_array();
       if (!curves || curves->empty())
         m.fail("curves", "must be a non-empty array of tables ([[measured.curves]] with normal_stress and file)");
-      const StrengthWindow window{s.base.shear_box.strength_window_start, s.base.shear_box.strength_window_end};
       for (std::size_t k = 0; k < curves->size(); ++k) {
         const toml::table* t = (*curves)[k].as_table();
         if (!t) m.fail("curves", "must be an array of tables ([[measured.curves]])");
@@ -322,9 +333,9 @@ Spec read_spec(const std::string& path) {
         const double normal_stress = c.positive("normal_stress");
         const std::string file = resolve(path, c.string("file", "", true));
         const MeasuredShearCurve curve =
-            read_measured_shear_curve(file, normal_stress, window, path, c.full("file"), s.warnings);
+            read_measured_shear_curve(file, normal_stress, s.strength, path, c.full("file"), s.warnings);
         if (!(curve.shear_strength > 0.0))
-          c.fail("file", file + ": the mean shear stress over the strength window is " + fmt(curve.shear_strength) +
+          c.fail("file", file + ": the shear strength (" + s.strength.describe() + ") is " + fmt(curve.shear_strength) +
                              " Pa; a shear strength must be > 0 (check the sign and units of shear_stress, Pa)");
         c.reject_unknown();
         sigma.push_back(normal_stress);

@@ -30,6 +30,7 @@ struct Spec {
   std::string measured_file;        // compression: the curve; shear: the results CSV (empty when curves are given)
   std::vector<std::pair<double, double>> measured_points;  // shear: (sigma, tau) in Pa; compression: empty
   std::vector<MeasuredShearCurve> measured_curves;         // shear: the curves the strengths came from, if any
+  StrengthDefinition strength;      // shear: which strength the targets are made of (measured.strength)
   double measured_fit_r2 = 0.0;     // compression: R^2 of the measured curve's quadratic; shear: of the line
   double measured_c0 = 0.0;         // compression: c0 of the measured curve (N), not a target
   std::vector<std::string> warnings;

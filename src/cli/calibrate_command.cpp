@@ -104,7 +104,7 @@ int calibrate_command(const CalibrateOptions& opt) {
     ctx.notes = "Each design run is a shear series at the loads";
     for (double l : spec.loads) ctx.notes += " " + std::to_string(l) + " Pa";
     ctx.notes += " from one settled sample (bond strengths do not act before loading); C and tan(Phi) from the "
-                 "Mohr-Coulomb line through the shear strengths.";
+                 "Mohr-Coulomb line through the shear strengths (" + spec.strength.describe() + ").";
   }
   ctx.measured = measured_data_summary(spec);
   ctx.measured_section = measured_data_section(spec);

@@ -325,3 +325,48 @@ TEST(CalibrateShearLoads, SideBySideLoadsGiveTheSameRunsAsOneAfterTheOther) {
   EXPECT_EQ(outputs[0].size(), 3u);
   EXPECT_EQ(outputs[0], outputs[1]);
 }
+
+TEST(CalibrateShearLoads, PeakStrengthIsReadFromTheRunsCurvesAsFromTheMeasuredOnes) {
+  // measured.strength = "peak": the measured curves are a design run's own load curves, so
+  // the targets sit exactly on that design point; with three points the planes pass through
+  // them, so the solution is that point and its validation run is the design run itself.
+  const fs::path dir = scratch_dir("calibrate-shear-peak");
+  fs::create_directories(dir);
+  const std::string head = "stage = \"shear\"\n[model]\nconfig = \"" + source_path("tests/data/small_shear.toml") +
+                           "\"\nset = [\"shear_box.shear_displacement=0.001\", \"shear_box.strength_window_start=0.0005\", "
+                           "\"shear_box.strength_window_end=0.001\"]\n"
+                           "[[parameters]]\nname = \"Cn\"\nkey = \"contact.contact_bond.normal_strength\"\n"
+                           "design = [0.5, 1.5, 2.5]\n[[parameters]]\nname = \"Cs\"\nkey = \"contact.contact_bond.shear_strength\"\n"
+                           "design = [3.0, 2.0, 3.0]\n";
+  const fs::path runs = dir / "runs";
+  // The design runs, made once (the paper's line is out of their reach: exit 2 after them).
+  write_file(dir / "line.toml", head + "[measured]\nresults = \"" + source_path("data/measured/shear_strength_paper_line.csv") +
+                                    "\"\ncohesion_uncertainty = 500.0\ntan_phi_uncertainty = 0.02\n");
+  run_colza("calibrate shear --quiet --threads 2 --spec " + (dir / "line.toml").string() + " --runs " + runs.string() +
+            " --out " + (dir / "line").string());
+  fs::path middle;  // the run at (Cn, Cs) = (1.5, 2.0)
+  for (const auto& e : fs::directory_iterator(runs))
+    if (fs::exists(e.path() / "summary.json") &&
+        read_json(e.path() / "summary.json")["parameters"]["contact.contact_bond.shear_strength"].get<double>() == 2.0)
+      middle = e.path();
+  ASSERT_FALSE(middle.empty());
+  write_file(dir / "peak.toml", head + "[measured]\nstrength = \"peak\"\npeak_width = 0.0002\n"
+                                       "cohesion_uncertainty = 500.0\ntan_phi_uncertainty = 0.02\n"
+                                       "[[measured.curves]]\nnormal_stress = 25750.0\nfile = \"" +
+                                       (middle / "load-25750Pa.csv").string() +
+                                       "\"\n[[measured.curves]]\nnormal_stress = 78750.0\nfile = \"" +
+                                       (middle / "load-78750Pa.csv").string() + "\"\n");
+  const CliResult r = run_colza("calibrate shear --quiet --spec " + (dir / "peak.toml").string() + " --runs " +
+                                runs.string() + " --out " + (dir / "peak").string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const auto s = read_json(dir / "peak" / "summary.json");
+  EXPECT_EQ(s["runs_reused"].get<int>(), 4) << s.dump(1);  // 3 design runs + the validation at (1.5, 2.0)
+  EXPECT_NEAR(s["parameters"][0]["value"].get<double>(), 1.5, 1e-9);
+  EXPECT_NEAR(s["parameters"][1]["value"].get<double>(), 2.0, 1e-9);
+  for (const auto& t : s["targets"]) EXPECT_NEAR(t["error"].get<double>(), 0.0, 1e-9 * std::abs(t["measured"].get<double>()));
+  EXPECT_EQ(s["measured"]["strength"], "peak");
+  EXPECT_NE(read_file(dir / "peak" / "report.md").find("peak strength: the largest mean shear stress"), std::string::npos);
+  // The peak differs from the window's mean: the targets are not the window line's.
+  const auto w = read_json(middle / "summary.json")["outputs"];
+  EXPECT_NE(s["targets"][0]["measured"].get<double>(), w["cohesion"].get<double>());
+}

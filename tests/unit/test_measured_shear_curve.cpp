@@ -73,6 +73,21 @@ TEST(ShearStrengthMean, MeanOfTheSamplesInsideTheClosedWindow) {
   EXPECT_EQ(ShearStrengthMean({0.0, 1.0}).value(), 0.0);  // no sample
 }
 
+TEST(PeakShearStrength, LargestMeanOverATrailingIntervalOfTheWidth) {
+  // d = 0, 0.25, .., 3 (binary fractions: exact), width 0.5: each interval holds 3 rows once
+  // d_i >= 0.5. Means: d = 0.5: 10, 0.75: 20, 1.0: 30, 1.25: (30 + 40 + 30) / 3, 1.5: 30, ...
+  std::vector<double> d, tau = {0, 10, 20, 30, 40, 30, 20, 10, 10, 10, 10, 10, 10};
+  for (std::size_t k = 0; k < tau.size(); ++k) d.push_back(0.25 * static_cast<double>(k));
+  const ShearPeak p = peak_shear_strength(d, tau, 0.5);
+  EXPECT_DOUBLE_EQ(p.value, 100.0 / 3.0);
+  EXPECT_DOUBLE_EQ(p.displacement, 1.25);
+  EXPECT_EQ(p.samples, 3u);
+  // Width 0: the largest single row.
+  EXPECT_DOUBLE_EQ(peak_shear_strength(d, tau, 0.0).value, 40.0);
+  // An interval longer than the curve: no peak.
+  EXPECT_EQ(peak_shear_strength(d, tau, 3.5).samples, 0u);
+}
+
 TEST_F(MeasuredShearCurveTest, StrengthIsTheMeanStressOverTheWindow) {
   std::vector<std::string> warnings;
   const auto c = read_measured_shear_curve(even_curve("c.csv", 3.0), 25e3, kWindow, "spec.toml", "k", warnings);
@@ -202,4 +217,48 @@ TEST_F(MeasuredShearCurveTest, SpecErrorsNameTheCurveKey) {
   EXPECT_EQ(no_stress.rfind("measured.curves[0].normal_stress | missing", 0), 0u) << no_stress;
   const std::string misspelt = error("[[measured.curves]]\nnormal_stress = 2e4\nfiel = \"low.csv\"\n");
   EXPECT_EQ(misspelt.rfind("measured.curves[0].file | missing", 0), 0u) << misspelt;
+}
+
+TEST_F(MeasuredShearCurveTest, PeakStrengthSpecReadsThePeakOfEachCurve) {
+  // Rows every 0.5 mm to 3 mm, tau = tau0 + 50 d (mm) with a bump of +400 Pa at 1.0 and 1.5
+  // mm: with peak_width 0.5 mm the largest trailing mean is at 1.5 mm, over rows 1.0 and 1.5:
+  // tau0 + 50 * 1.25 + 400.
+  auto bumped = [&](const std::string& name, double tau0) {
+    std::string t = "shear_displacement,shear_stress\n";
+    for (int k = 0; k <= 6; ++k) {
+      const double mm = 0.5 * k;
+      t += std::to_string(0.0005 * k) + "," + std::to_string(tau0 + 50.0 * mm + ((k == 2 || k == 3) ? 400.0 : 0.0)) + "\n";
+    }
+    return write(name, t);
+  };
+  bumped("low.csv", 1000.0);
+  bumped("high.csv", 2000.0);
+  const std::string curves = "[[measured.curves]]\nnormal_stress = 20000.0\nfile = \"low.csv\"\n"
+                             "[[measured.curves]]\nnormal_stress = 60000.0\nfile = \"high.csv\"\n";
+  const Spec s = read_spec(write("spec.toml", shear_spec("strength = \"peak\"\npeak_width = 0.0005\n" + curves)));
+  ASSERT_TRUE(s.strength.peak);
+  EXPECT_NEAR(s.measured_curves[0].shear_strength, 1000.0 + 62.5 + 400.0, 1e-9);
+  EXPECT_NEAR(s.measured_curves[0].peak_displacement, 0.0015, 1e-12);
+  EXPECT_EQ(s.measured_curves[0].window_points, 2u);
+  EXPECT_NEAR(s.problem.targets[0].value, fit_mohr_coulomb({2e4, 6e4}, {1462.5, 2462.5}).cohesion, 1e-9);
+  // The same curves by the window (1.5 .. 3 mm): the plain mean of four rows.
+  const Spec w = read_spec(write("spec2.toml", shear_spec(curves)));
+  EXPECT_FALSE(w.strength.peak);
+  EXPECT_NEAR(w.measured_curves[0].shear_strength, 1000.0 + 50.0 * 2.25 + 100.0, 1e-9);
+  // Errors: an unknown definition, a width without the peak, a curve shorter than the width.
+  auto error = [&](const std::string& measured) -> std::string {
+    try {
+      read_spec(write("bad.toml", shear_spec(measured)));
+    } catch (const ConfigError& e) {
+      return e.key() + " | " + e.reason();
+    }
+    return "no error";
+  };
+  const std::string kind = error("strength = \"max\"\n" + curves);
+  EXPECT_EQ(kind.rfind("measured.strength | must be \"window\"", 0), 0u) << kind;
+  const std::string width = error("peak_width = 0.001\n" + curves);
+  EXPECT_EQ(width.rfind("measured.peak_width | only with strength = \"peak\"", 0), 0u) << width;
+  const std::string too_wide = error("strength = \"peak\"\npeak_width = 0.004\n" + curves);
+  EXPECT_EQ(too_wide.rfind("measured.curves[0].file | ", 0), 0u) << too_wide;
+  EXPECT_NE(too_wide.find("less than the peak width 0.004 m"), std::string::npos) << too_wide;
 }
