@@ -42,16 +42,20 @@ std::string num17(double v) { return format_significant(v, 17); }  // round-trip
 
 Scenario scenario_of(const Spec& s) { return s.stage == Stage::kShear ? Scenario::kShear : Scenario::kOedometer; }
 
-// The settled sample depends on everything but the bond strengths and the loads.
+// The settled sample depends on everything but the bond strengths (installed before
+// loading), the loads and the keys of the shearing stage: specs that shear further or
+// shorter, or record more often, share one sample.
 std::string sample_fingerprint(const RunConfig& c) {
   toml::table doc = toml::parse(c.resolved_toml);
-  if (auto* box = doc["shear_box"].as_table()) box->erase("normal_stresses");
+  if (auto* box = doc["shear_box"].as_table())
+    for (const char* k : {"normal_stresses", "shear_displacement", "shear_speed", "strength_window_start",
+                          "strength_window_end", "record_interval"})
+      box->erase(k);
   if (auto* contact = doc["contact"].as_table()) contact->erase("contact_bond");
   std::ostringstream text;
   text << doc;
   return fingerprint_text(text.str());
 }
-
 
 }  // namespace
 

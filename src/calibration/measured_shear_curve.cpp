@@ -87,6 +87,9 @@ MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double norm
       throw ConfigError(spec_file, key, csv + ": 1 row inside the peak's interval of " + fmt(strength.peak_width) +
                                             " m; at least 2 are needed for a mean shear stress: supply a curve "
                                             "sampled more densely, or widen measured.peak_width");
+    if (c.peak_displacement > d.back() - strength.peak_width)
+      warnings.push_back(csv + ": the largest mean lies in the curve's last " + fmt(strength.peak_width) +
+                         " m: the curve may not have reached its peak (supply the whole curve)");
     return c;
   }
   if (c.max_displacement < window.end)

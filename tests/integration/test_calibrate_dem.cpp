@@ -369,4 +369,19 @@ TEST(CalibrateShearLoads, PeakStrengthIsReadFromTheRunsCurvesAsFromTheMeasuredOn
   // The peak differs from the window's mean: the targets are not the window line's.
   const auto w = read_json(middle / "summary.json")["outputs"];
   EXPECT_NE(s["targets"][0]["measured"].get<double>(), w["cohesion"].get<double>());
+  // Shearing less far is other runs on the same settled sample (one sample directory).
+  std::string shorter = read_file(dir / "line.toml");
+  shorter.replace(shorter.find("shear_displacement=0.001"), 24, "shear_displacement=0.0009");
+  shorter.replace(shorter.find("strength_window_end=0.001"), 25, "strength_window_end=0.0009");
+  write_file(dir / "shorter.toml", shorter);
+  run_colza("calibrate shear --quiet --threads 2 --spec " + (dir / "shorter.toml").string() + " --runs " +
+            runs.string() + " --out " + (dir / "shorter").string());
+  int samples = 0, run_dirs = 0;
+  for (const auto& e : fs::directory_iterator(runs)) {
+    const std::string name = e.path().filename().string();
+    samples += name.rfind("sample-", 0) == 0;
+    run_dirs += fs::exists(e.path() / "summary.json");
+  }
+  EXPECT_EQ(samples, 1);
+  EXPECT_EQ(run_dirs, 6);  // 3 design points at 1 mm, 3 at 0.9 mm
 }

@@ -232,6 +232,7 @@ TEST_F(MeasuredShearCurveTest, PeakStrengthSpecReadsThePeakOfEachCurve) {
     return write(name, t);
   };
   bumped("low.csv", 1000.0);
+  even_curve("up.csv", 3.0);  // rises to its end
   bumped("high.csv", 2000.0);
   const std::string curves = "[[measured.curves]]\nnormal_stress = 20000.0\nfile = \"low.csv\"\n"
                              "[[measured.curves]]\nnormal_stress = 60000.0\nfile = \"high.csv\"\n";
@@ -261,4 +262,12 @@ TEST_F(MeasuredShearCurveTest, PeakStrengthSpecReadsThePeakOfEachCurve) {
   const std::string too_wide = error("strength = \"peak\"\npeak_width = 0.004\n" + curves);
   EXPECT_EQ(too_wide.rfind("measured.curves[0].file | ", 0), 0u) << too_wide;
   EXPECT_NE(too_wide.find("less than the peak width 0.004 m"), std::string::npos) << too_wide;
+  // A curve still rising at its end: the peak is not known, a warning says so.
+  EXPECT_TRUE(s.warnings.empty());
+  const Spec rising = read_spec(write("rising.toml", shear_spec("strength = \"peak\"\npeak_width = 0.0005\n"
+                                                                "[[measured.curves]]\nnormal_stress = 20000.0\nfile = \"up.csv\"\n"
+                                                                "[[measured.curves]]\nnormal_stress = 60000.0\nfile = \"high.csv\"\n")));
+  ASSERT_EQ(rising.warnings.size(), 1u);
+  EXPECT_NE(rising.warnings[0].find("up.csv: the largest mean lies in the curve's last 0.0005 m"), std::string::npos)
+      << rising.warnings[0];
 }
