@@ -8,12 +8,15 @@
 #                and 78.75 kPa (the paper's box, 30 mm of shear); the design runs are the same
 #                runs as data/calibration/shear.toml's: a runs-shear directory copied from
 #                such a calibration's runs/ is reused
+#   shear_peak:  the same truth and design, targets from the curves' peaks (strength =
+#                "peak", 1 mm), 8 mm of shear per design run (about 5 min per point)
 # density + compression: about 40 min on 2 cores. shear: hours (each design point is two
 # 30 mm loads of 11342 spheres, 10-15 min each on 2 cores; the settling of the sample ~11 min;
 # 12 loads for the paper mode, 6-14 for the sequential mode, plus the truth).
 # Calibrations reuse finished design runs, so an interrupted run continues where it stopped.
 # Usage: scripts/calibration-identity-full.sh [WORKDIR [STAGE ...]]
-#        (default /tmp/colza-identity-full, stages density compression; add shear explicitly)
+#        (default /tmp/colza-identity-full, stages density compression; add shear and
+#        shear_peak explicitly)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 colza="$root/build/src/colza"
@@ -38,21 +41,23 @@ if wants compression; then
   sed -e "s|@OEDOMETER_CONFIG@|$oed|" -e "s|@TRUTH_CURVE@|$work/truth-compression/curve.csv|" \
     "$root/data/calibration/identity/compression_full.toml" > compression_full.toml
 fi
-if wants shear; then
+if wants shear || wants shear_peak; then
   # The truth settles its sample from data/shear.toml at seed 1, as every design run does.
   shear="$root/data/shear.toml"
   [ -f truth-shear/summary.json ] || "$colza" run shear-series --config "$shear" \
     --set 'shear_box.normal_stresses=[25750.0, 78750.0]' --set contact.contact_bond.normal_strength=1.8 \
     --set contact.contact_bond.shear_strength=3.3 --jobs 2 --threads 1 --out truth-shear --quiet
-  sed -e "s|@SHEAR_CONFIG@|$shear|" -e "s|@TRUTH_DIR@|$work/truth-shear|" \
-    "$root/data/calibration/identity/shear_full.toml" > shear_full.toml
+  for spec in shear_full shear_peak_full; do
+    sed -e "s|@SHEAR_CONFIG@|$shear|" -e "s|@TRUTH_DIR@|$work/truth-shear|" \
+      "$root/data/calibration/identity/$spec.toml" > "$spec.toml"
+  done
 fi
 
 for stage in "${stages[@]}"; do
   for mode in paper sequential; do
     echo "== $stage, $mode"
     # One runs directory per stage: the two modes share the runs they have in common.
-    "$colza" calibrate "$stage" --spec "${stage}_full.toml" --mode "$mode" --out "out-$stage-$mode" \
+    "$colza" calibrate "${stage%_peak}" --spec "${stage}_full.toml" --mode "$mode" --out "out-$stage-$mode" \
       --runs "runs-$stage" --force --quiet || true
   done
 done
