@@ -55,7 +55,13 @@ void run_concurrently(std::size_t count, int threads, Job&& job, int threads_per
   const int n = std::max(1, std::min<int>(threads, static_cast<int>(count)));
   std::vector<std::thread> pool;
   for (int j = 1; j < n; ++j) pool.emplace_back(worker);
+#ifdef _OPENMP
+  const int caller_threads = omp_get_max_threads();  // the caller's thread is a worker too:
+#endif
   worker();
+#ifdef _OPENMP
+  omp_set_num_threads(caller_threads);  // give it back its own count (threads_per_job may differ)
+#endif
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
 }

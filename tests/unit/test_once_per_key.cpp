@@ -1,4 +1,5 @@
 // OncePerKey (core/concurrent.hpp): a value is made once per key however many threads ask
+// (and run_concurrently's OpenMP thread counts, at the end)
 // for it at once, and a make that throws is tried again by the next caller.
 #include <gtest/gtest.h>
 
@@ -40,3 +41,21 @@ TEST(OncePerKey, AFailedMakeIsTriedAgain) {
   EXPECT_EQ(cache.get("a", [] { return 7; }), 7);
   EXPECT_EQ(cache.get("a", [] { return 8; }), 7);  // made once: the first success stands
 }
+
+#ifdef _OPENMP
+TEST(RunConcurrently, JobsGetTheirThreadCountAndTheCallerKeepsItsOwn) {
+  // The caller's thread works as one of the job threads; a per-job thread count must not
+  // stay with it afterwards (it did: every later design run then ran on one thread).
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(3);
+  std::atomic<int> seen[2] = {0, 0};
+  colza::run_concurrently(2, 2, [&](std::size_t k) { seen[k] = omp_get_max_threads(); }, 1);
+  EXPECT_EQ(seen[0].load(), 1);
+  EXPECT_EQ(seen[1].load(), 1);
+  EXPECT_EQ(omp_get_max_threads(), 3);
+  colza::run_concurrently(2, 2, [&](std::size_t k) { seen[k] = omp_get_max_threads(); });  // the caller's count
+  EXPECT_EQ(seen[0].load(), 3);
+  EXPECT_EQ(seen[1].load(), 3);
+  omp_set_num_threads(before);
+}
+#endif
