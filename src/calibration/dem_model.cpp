@@ -32,11 +32,7 @@ namespace {
 std::string process_unique(const std::string& name) { return name + "." + std::to_string(::getpid()); }
 
 // A shear design run's curve at normal stress sigma (Pa): load-<sigma>Pa.csv.
-std::string shear_curve_file_name(double sigma) {
-  char b[64];
-  std::snprintf(b, sizeof b, "load-%.0fPa.csv", sigma);
-  return b;
-}
+std::string shear_curve_file_name(double sigma) { return load_label(sigma) + ".csv"; }
 
 std::string num17(double v) { return format_significant(v, 17); }  // round-trips a double
 
@@ -182,9 +178,10 @@ nlohmann::json DemModel::run_shear_outputs(const RunConfig& c, double& wall, std
   std::vector<double> tau(n);
   std::vector<nlohmann::json> load_json(n);
   curves.assign(n, Table{});
-  // The loads run side by side when this run has a thread per load or more (each load then
-  // gets threads / loads): two loads at one thread each beat one after the other at two
-  // (the force loop scales by ~1.8 on two threads). Same bits at any thread count.
+  // With two threads or more the loads run side by side, min(threads, loads) at a time with
+  // threads / that many each (the remainder idles: 3 threads, 2 loads: one each): two loads
+  // at one thread each beat one after the other at two (the force loop scales by ~1.8 on
+  // two threads). Same bits at any thread count.
   const int threads = worker_threads_here();
   const int side_by_side = std::max(1, std::min(threads, static_cast<int>(n)));
   run_concurrently(
@@ -232,25 +229,37 @@ Eigen::VectorXd DemModel::targets_from(const nlohmann::json& out, const std::str
   return y;
 }
 
-Eigen::VectorXd DemModel::peak_targets(const fs::path& dir, const std::string& id) const {
+bool DemModel::has_load_curves(const fs::path& dir) const {
+  for (double sigma : spec_.loads)
+    if (!fs::exists(dir / shear_curve_file_name(sigma))) return false;
+  return true;
+}
+
+Eigen::VectorXd DemModel::peak_targets(const fs::path& dir, const std::string& id) {
   // C and tan(Phi) of the line through the peak strengths of the run's kept load curves,
   // by the same definition as the measured curves' (StrengthDefinition).
   std::vector<double> tau;
   for (double sigma : spec_.loads) {
     const fs::path file = dir / shear_curve_file_name(sigma);
-    if (!fs::exists(file))
-      throw CalibrationError("measured.strength", "DEM run " + id + " keeps no load curves (made by a colza older "
-                             "than the peak strength): remove " + dir.string() + " to run it again, or use "
-                             "strength = \"window\"");
-    const auto cols = read_csv_columns(file.string(), {kShearDisplacementColumn, kShearStressColumn}, spec_.file,
-                                       "measured.strength");
+    const auto cols = read_csv_columns(file.string(), {kShearDisplacementColumn, kShearStressColumn}, file.string(),
+                                       "(a DEM run's load curve)");
     std::size_t samples = 0;
     double at = 0.0;
     tau.push_back(curve_strength(cols[0], cols[1], spec_.strength, samples, at));
+    if (samples == 0)
+      throw CalibrationError("measured.peak_width", "DEM run " + id + ": " + file.string() + " spans less shear "
+                             "displacement than the peak width " + format_significant(spec_.strength.peak_width, 6) +
+                             " m: narrow measured.peak_width or shear further (shear_box.shear_displacement)");
     if (samples < 2)
-      throw CalibrationError("measured.peak_width", "DEM run " + id + ": " + std::to_string(samples) +
-                             " row(s) of " + file.string() + " in the peak's interval: widen measured.peak_width "
-                             "or record the curve more often (shear_box.record_interval)");
+      throw CalibrationError("measured.peak_width", "DEM run " + id + ": 1 row of " + file.string() +
+                             " in the peak's interval: widen measured.peak_width or record the curve more often "
+                             "(shear_box.record_interval)");
+    if (at > cols[0].back() - spec_.strength.peak_width) {
+      std::lock_guard<std::mutex> lock(note_mutex_);
+      warnings_.push_back("DEM run " + id + ": the largest mean of " + file.string() + " lies in its last " +
+                          format_significant(spec_.strength.peak_width, 6) + " m: the run may not have reached its "
+                          "peak; shear further (shear_box.shear_displacement)");
+    }
   }
   const MohrCoulombFit mc = fit_mohr_coulomb(spec_.loads, tau);
   return Eigen::Vector2d(mc.cohesion, mc.slope);
@@ -267,7 +276,10 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
   rec.replicate = replicate;
   if (fs::exists(summary)) {
     const auto s = nlohmann::json::parse(std::ifstream(summary));
-    if (s.value("fingerprint", "") == fp) {
+    // A run reuses a finished one unless the spec needs what the older run did not keep
+    // (the load curves, for the peak strength): then it runs again in its place.
+    const bool needs_curves = spec_.stage == Stage::kShear && spec_.strength.peak;
+    if (s.value("fingerprint", "") == fp && (!needs_curves || has_load_curves(dir))) {
       rec.outputs = s["outputs"];
       rec.reused = true;
       rec.wall_seconds = s.value("wall_seconds", 0.0);

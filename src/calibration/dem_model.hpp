@@ -45,6 +45,10 @@ class DemModel {
     std::lock_guard<std::mutex> lock(note_mutex_);
     return packing_note_;
   }
+  std::vector<std::string> warnings() const {  // about runs (a peak at the end of a curve)
+    std::lock_guard<std::mutex> lock(note_mutex_);
+    return warnings_;
+  }
 
  private:
   RunConfig config_for(const Eigen::VectorXd& x, int replicate, std::string& fingerprint);
@@ -54,7 +58,8 @@ class DemModel {
   std::shared_ptr<const ShearSample> shear_sample(const RunConfig& c);
   std::pair<std::string, std::string> shared_packing(int replicate);  // (path, fingerprint)
   Eigen::VectorXd targets_from(const nlohmann::json& outputs, const std::string& id) const;
-  Eigen::VectorXd peak_targets(const std::filesystem::path& run_dir, const std::string& id) const;  // shear, strength = "peak"
+  Eigen::VectorXd peak_targets(const std::filesystem::path& run_dir, const std::string& id);  // shear, strength = "peak"
+  bool has_load_curves(const std::filesystem::path& run_dir) const;
 
   const Spec& spec_;
   std::filesystem::path runs_;
@@ -63,8 +68,9 @@ class DemModel {
   std::vector<DemRunRecord> records_;
   OncePerKey<std::string, std::shared_ptr<const ShearSample>> samples_;  // by sample fingerprint
   OncePerKey<int, std::pair<std::string, std::string>> packings_;       // replicate -> (path, fingerprint)
-  mutable std::mutex note_mutex_;      // packing_note_
+  mutable std::mutex note_mutex_;      // packing_note_, warnings_
   std::string packing_note_;
+  std::vector<std::string> warnings_;
 };
 
 }  // namespace colza::calibration

@@ -43,7 +43,7 @@ nlohmann::json measured_data_summary(const Spec& s) {
                               {"shear_strength", c.shear_strength},
                               {"file", c.file},
                               {"rows", c.rows},
-                              {"rows_in_window", c.window_points},
+                              {s.strength.peak ? "rows_in_peak_interval" : "rows_in_window", c.window_points},
                               {"max_displacement", c.max_displacement}};
           if (s.strength.peak) j["peak_displacement"] = c.peak_displacement;
           m["strengths"].push_back(j);

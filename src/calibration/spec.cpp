@@ -311,6 +311,10 @@ Spec read_spec(const std::string& path) {
       if (!s.strength.peak) m.fail("peak_width", "only with strength = \"peak\"");
       s.strength.peak_width = m.positive("peak_width");
     }
+    if (s.strength.peak && !(s.strength.peak_width < s.base.shear_box.shear_displacement))
+      m.fail("peak_width", "the peak width " + fmt(s.strength.peak_width) + " m must be shorter than the simulated "
+                           "shear displacement (shear_box.shear_displacement = " +
+                           fmt(s.base.shear_box.shear_displacement) + " m)");
     std::vector<double> sigma, tau;
     if (has_results) {
       s.measured_file = resolve(path, m.string("results", "", true));

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "calibration/calibrate.hpp"
 #include "calibration/dem_model.hpp"
@@ -51,6 +52,24 @@ int input_errors_to_exit_code(const CalibrateOptions& opt, const Spec& spec, Ste
   return 0;
 }
 
+// Warnings about the DEM runs: those the model noted (a peak at a curve's end), and the
+// reused runs another revision of colza made (a run's fingerprint holds its config, not the
+// code: they stand only if the physics did not change in between). Revisions are compared
+// as strings ("unknown" for runs older than the field; a "-dirty" build equals another).
+std::vector<std::string> warnings_about_runs(const DemModel& dem, const fs::path& runs) {
+  std::vector<std::string> w = dem.warnings();
+  std::set<std::string> listed;
+  std::string other;
+  for (const auto& rec : dem.records())
+    if (rec.reused && rec.made_by != git_revision() && listed.insert(rec.id).second)
+      other += (other.empty() ? "" : ", ") + rec.id + " (" + rec.made_by + ")";
+  if (!other.empty())
+    w.push_back("reused runs made by another revision of colza than this one (" + std::string(git_revision()) +
+                "): " + other + "; they stand only if the physics did not change in between: remove them from " +
+                runs.string() + " to run them again");
+  return w;
+}
+
 }  // namespace
 
 int calibrate_command(const CalibrateOptions& opt) {
@@ -78,18 +97,22 @@ int calibrate_command(const CalibrateOptions& opt) {
   }
   const fs::path out(opt.out_dir);
   fs::create_directories(out);
-  const fs::path runs = opt.runs_dir.empty() ? out / "runs" : fs::path(opt.runs_dir);
+  const fs::path runs = opt.runs_dir.empty() ? out / "runs" : fs::absolute(opt.runs_dir);
   DemModel dem(spec, runs, verbose);
   const ForwardModel model = [&dem](const Eigen::VectorXd& x) { return dem(x); };
   LoopOptions loop;
   loop.jobs = opt.jobs;
   loop.replicate_model = [&dem](const Eigen::VectorXd& x, int replicate) { return dem.run(x, replicate); };
   CalibrationResult result;
-  if (const int code = input_errors_to_exit_code(opt, spec, [&] {
-        result = opt.mode == "sequential" ? calibrate_sequential(spec.problem, model, loop)
-                                          : calibrate_paper(spec.problem, model, loop);
-      }))
-    return code;
+  const int code = input_errors_to_exit_code(opt, spec, [&] {
+    result = opt.mode == "sequential" ? calibrate_sequential(spec.problem, model, loop)
+                                      : calibrate_paper(spec.problem, model, loop);
+  });
+  // What the runs say (printed whether or not the calibration succeeded: a failed one may
+  // be due to them).
+  const std::vector<std::string> run_warnings = warnings_about_runs(dem, runs);
+  for (const auto& w : run_warnings) std::fprintf(stderr, "colza: warning: %s\n", w.c_str());
+  if (code) return code;
 
   ReportContext ctx;
   ctx.stage = to_string(spec.stage);
@@ -115,18 +138,7 @@ int calibrate_command(const CalibrateOptions& opt) {
     ctx.run_wall_seconds.push_back(rec ? rec->wall_seconds : 0.0);
   }
   ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  // A run's fingerprint holds its config, not the code: say which reused runs another
-  // revision of colza made (valid only if the physics did not change in between).
-  std::string other_revisions;
-  for (const auto& rec : dem.records())
-    if (rec.reused && rec.made_by != git_revision())
-      other_revisions += (other_revisions.empty() ? "" : ", ") + rec.id + " (" + rec.made_by + ")";
-  if (!other_revisions.empty())
-    ctx.extra_warnings.push_back("reused runs made by another revision of colza than this one (" +
-                                 std::string(git_revision()) + "): " + other_revisions +
-                                 "; they stand only if the physics did not change in between: remove them from " +
-                                 runs.string() + " to run them again");
-  if (!other_revisions.empty()) std::fprintf(stderr, "colza: warning: %s\n", ctx.extra_warnings.back().c_str());
+  for (const auto& w : run_warnings) ctx.extra_warnings.push_back(w);
 
   OutputStaging staging(out, /*overwrite=*/true);  // an earlier summary was refused above unless --force
   write_json(staging.path("summary.json"), calibration_summary(spec.problem, result, ctx));

@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::IsMember({"density", "compression", "shear"}));
   calibrate->add_option("--spec", cal.spec_path, "calibration spec (TOML, see data/calibration/)")->required();
-  calibrate->add_option("--out", cal.out_dir, "output directory (design runs are kept and reused in DIR/runs)")->required();
+  calibrate->add_option("--out", cal.out_dir, "output directory (design runs are kept and reused in DIR/runs unless --runs)")->required();
   calibrate->add_option("--mode", cal.mode, "paper (fixed design, default) | sequential (trust-region refinement)")
       ->check(CLI::IsMember({"paper", "sequential"}));
   calibrate->add_option("--runs", cal.runs_dir,

@@ -33,12 +33,6 @@ std::string config_fingerprint(const RunConfig& c) {
   return fingerprint_text(text.str());
 }
 
-std::string load_dir_name(double sigma) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "load-%.0fPa", sigma);
-  return buf;
-}
-
 nlohmann::json load_summary(const RunConfig& c, const ShearSample& sample, const ShearLoadResult& r, int threads) {
   nlohmann::json s = common_summary(c, "shear", threads);
   s["config_fingerprint"] = config_fingerprint(c);
@@ -134,14 +128,14 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   std::vector<nlohmann::json> load_json(loads.size());
   std::vector<std::size_t> todo;
   for (std::size_t k = 0; k < loads.size(); ++k) {
-    const fs::path summary = dir / load_dir_name(loads[k]) / "summary.json";
+    const fs::path summary = dir / load_label(loads[k]) / "summary.json";
     if (!opt.force && fs::exists(summary)) {
       const auto s = nlohmann::json::parse(std::ifstream(summary));
       if (s.value("config_fingerprint", "") == fingerprint && s.value("normal_stress", -1.0) == loads[k]) {
         strength[k] = s["shear_strength"].get<double>();
         load_json[k] = s;
         load_json[k]["reused"] = true;
-        std::printf("  sigma %.2f kPa: reusing the finished load in %s\n", loads[k] * 1e-3, load_dir_name(loads[k]).c_str());
+        std::printf("  sigma %.2f kPa: reusing the finished load in %s\n", loads[k] * 1e-3, load_label(loads[k]).c_str());
         continue;
       }
     }
@@ -153,7 +147,7 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
     Progress load_progress(!opt.quiet && opt.jobs <= 1);
     const ShearLoadResult r = run_shear_load(c, sample, loads[k], load_progress);
     nlohmann::json s = load_summary(c, sample, r, opt.threads);
-    OutputStaging out(dir / load_dir_name(loads[k]), true);
+    OutputStaging out(dir / load_label(loads[k]), true);
     write_load(out, c, r, s);
     out.commit();
     std::lock_guard<std::mutex> lock(mutex);
@@ -178,7 +172,7 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
                           {"particles_outside", load_json[k].value("particles_outside", 0)},
                           {"wall_seconds", load_json[k].value("wall_seconds", 0.0)},
                           {"reused", load_json[k].value("reused", false)},
-                          {"directory", load_dir_name(loads[k])}});
+                          {"directory", load_label(loads[k])}});
   if (loads.size() >= 2) {
     const MohrCoulombFit mc = fit_mohr_coulomb(loads, strength);
     s["cohesion"] = mc.cohesion;

@@ -20,7 +20,7 @@ void check_output_dir(const fs::path& dir, bool overwrite) {
 }
 
 void write_text_atomically(const fs::path& file, const std::string& text) {
-  const fs::path tmp = file.string() + ".tmp";
+  const fs::path tmp = file.string() + ".tmp." + std::to_string(::getpid());  // two writers never share it
   {
     std::ofstream o(tmp);
     o << text;

@@ -114,6 +114,12 @@ std::size_t count_outside(const World& w, const ShearBoxSpec& b, double offset, 
 
 }  // namespace
 
+std::string load_label(double normal_stress) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "load-%.0fPa", normal_stress);
+  return buf;
+}
+
 ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, double normal_stress,
                                Progress& progress) {
   ShearLoadResult r;

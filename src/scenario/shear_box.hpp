@@ -54,6 +54,10 @@ struct ShearLoadResult {
   std::uint64_t bonds_broken_tension = 0, bonds_broken_shear = 0;
 };
 
+// The name of one load's results, "load-<sigma>Pa" (sigma in Pa, to the nearest pascal):
+// a series' load directory, a calibration run's load curve (+ ".csv").
+std::string load_label(double normal_stress);
+
 ShearLoadResult run_shear_load(const RunConfig& config, const ShearSample& sample, double normal_stress,
                                Progress& progress);
 

@@ -313,8 +313,10 @@ TEST(CalibrateShearLoads, SideBySideLoadsGiveTheSameRunsAsOneAfterTheOther) {
   std::map<std::string, nlohmann::json> outputs[2];
   for (int threads : {1, 2}) {
     const fs::path out = dir / ("threads" + std::to_string(threads));
-    run_colza("calibrate shear --quiet --jobs 1 --threads " + std::to_string(threads) + " --spec " + spec.string() +
-              " --out " + out.string());
+    EXPECT_EQ(run_colza("calibrate shear --quiet --jobs 1 --threads " + std::to_string(threads) + " --spec " +
+                        spec.string() + " --out " + out.string())
+                  .exit_code,
+              2);  // out of reach, after the design runs
     for (const auto& e : fs::directory_iterator(out / "runs"))
       if (fs::exists(e.path() / "summary.json")) {
         outputs[threads - 1][e.path().filename().string()] = read_json(e.path() / "summary.json")["outputs"];
@@ -342,20 +344,24 @@ TEST(CalibrateShearLoads, PeakStrengthIsReadFromTheRunsCurvesAsFromTheMeasuredOn
   // The design runs, made once (the paper's line is out of their reach: exit 2 after them).
   write_file(dir / "line.toml", head + "[measured]\nresults = \"" + source_path("data/measured/shear_strength_paper_line.csv") +
                                     "\"\ncohesion_uncertainty = 500.0\ntan_phi_uncertainty = 0.02\n");
-  run_colza("calibrate shear --quiet --threads 2 --spec " + (dir / "line.toml").string() + " --runs " + runs.string() +
-            " --out " + (dir / "line").string());
+  EXPECT_EQ(run_colza("calibrate shear --quiet --threads 2 --spec " + (dir / "line.toml").string() + " --runs " +
+                      runs.string() + " --out " + (dir / "line").string())
+                .exit_code,
+            2);
   fs::path middle;  // the run at (Cn, Cs) = (1.5, 2.0)
   for (const auto& e : fs::directory_iterator(runs))
     if (fs::exists(e.path() / "summary.json") &&
         read_json(e.path() / "summary.json")["parameters"]["contact.contact_bond.shear_strength"].get<double>() == 2.0)
       middle = e.path();
   ASSERT_FALSE(middle.empty());
+  for (const char* load : {"load-25750Pa.csv", "load-78750Pa.csv"})  // the "measured" curves
+    fs::copy_file(middle / load, dir / (std::string("measured-") + load));
   write_file(dir / "peak.toml", head + "[measured]\nstrength = \"peak\"\npeak_width = 0.0002\n"
                                        "cohesion_uncertainty = 500.0\ntan_phi_uncertainty = 0.02\n"
                                        "[[measured.curves]]\nnormal_stress = 25750.0\nfile = \"" +
-                                       (middle / "load-25750Pa.csv").string() +
+                                       (dir / "measured-load-25750Pa.csv").string() +
                                        "\"\n[[measured.curves]]\nnormal_stress = 78750.0\nfile = \"" +
-                                       (middle / "load-78750Pa.csv").string() + "\"\n");
+                                       (dir / "measured-load-78750Pa.csv").string() + "\"\n");
   const CliResult r = run_colza("calibrate shear --quiet --spec " + (dir / "peak.toml").string() + " --runs " +
                                 runs.string() + " --out " + (dir / "peak").string());
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
@@ -369,13 +375,25 @@ TEST(CalibrateShearLoads, PeakStrengthIsReadFromTheRunsCurvesAsFromTheMeasuredOn
   // The peak differs from the window's mean: the targets are not the window line's.
   const auto w = read_json(middle / "summary.json")["outputs"];
   EXPECT_NE(s["targets"][0]["measured"].get<double>(), w["cohesion"].get<double>());
+  // A finished run without its load curves (as made before colza kept them) runs again in
+  // its place: 2 design runs reused, the middle one made anew (and the validation at the
+  // same point is reported as that run).
+  fs::remove(middle / "load-78750Pa.csv");
+  const CliResult again = run_colza("calibrate shear --quiet --force --spec " + (dir / "peak.toml").string() +
+                                    " --runs " + runs.string() + " --out " + (dir / "peak").string());
+  ASSERT_EQ(again.exit_code, 0) << again.stderr_text;
+  EXPECT_EQ(read_json(dir / "peak" / "summary.json")["runs_reused"].get<int>(), 2);
+  EXPECT_TRUE(fs::exists(middle / "load-78750Pa.csv"));
+  EXPECT_EQ(read_json(dir / "peak" / "summary.json")["parameters"][1]["value"].get<double>(), 2.0);
   // Shearing less far is other runs on the same settled sample (one sample directory).
   std::string shorter = read_file(dir / "line.toml");
   shorter.replace(shorter.find("shear_displacement=0.001"), 24, "shear_displacement=0.0009");
   shorter.replace(shorter.find("strength_window_end=0.001"), 25, "strength_window_end=0.0009");
   write_file(dir / "shorter.toml", shorter);
-  run_colza("calibrate shear --quiet --threads 2 --spec " + (dir / "shorter.toml").string() + " --runs " +
-            runs.string() + " --out " + (dir / "shorter").string());
+  EXPECT_EQ(run_colza("calibrate shear --quiet --threads 2 --spec " + (dir / "shorter.toml").string() + " --runs " +
+                      runs.string() + " --out " + (dir / "shorter").string())
+                .exit_code,
+            2);
   int samples = 0, run_dirs = 0;
   for (const auto& e : fs::directory_iterator(runs)) {
     const std::string name = e.path().filename().string();

@@ -260,8 +260,15 @@ TEST_F(MeasuredShearCurveTest, PeakStrengthSpecReadsThePeakOfEachCurve) {
   const std::string width = error("peak_width = 0.001\n" + curves);
   EXPECT_EQ(width.rfind("measured.peak_width | only with strength = \"peak\"", 0), 0u) << width;
   const std::string too_wide = error("strength = \"peak\"\npeak_width = 0.004\n" + curves);
-  EXPECT_EQ(too_wide.rfind("measured.curves[0].file | ", 0), 0u) << too_wide;
-  EXPECT_NE(too_wide.find("less than the peak width 0.004 m"), std::string::npos) << too_wide;
+  EXPECT_EQ(too_wide.rfind("measured.peak_width | the peak width 0.004 m must be shorter than the simulated shear "
+                           "displacement (shear_box.shear_displacement = 0.003 m)", 0), 0u) << too_wide;
+  even_curve("short.csv", 1.0);
+  const std::string too_short = error("strength = \"peak\"\npeak_width = 0.002\n[[measured.curves]]\nnormal_stress = "
+                                      "20000.0\nfile = \"short.csv\"\n[[measured.curves]]\nnormal_stress = 60000.0\n"
+                                      "file = \"high.csv\"\n");
+  EXPECT_EQ(too_short.rfind("measured.curves[0].file | ", 0), 0u) << too_short;
+  EXPECT_NE(too_short.find("spans 0.001 m of shear displacement, less than the peak width 0.002 m"), std::string::npos)
+      << too_short;
   // A curve still rising at its end: the peak is not known, a warning says so.
   EXPECT_TRUE(s.warnings.empty());
   const Spec rising = read_spec(write("rising.toml", shear_spec("strength = \"peak\"\npeak_width = 0.0005\n"
