@@ -145,12 +145,13 @@ void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>&
   r.sigma = (cov_t + cov_s + cov_r).diagonal().cwiseSqrt();
 }
 
-// A parameter whose +/- 2 sigma interval (sigma from propagate_uncertainty) is wider than its
-// design range is not determined by the targets: any value in the range reproduces them
-// within their uncertainty and the surfaces' error, so the solution's value of it is
-// arbitrary. Says so, with how much each target's surface changes across the range (|J_ij|
-// times the range, in the target's unit and in units of its uncertainty). Infinite sigma has
-// its own warning (propagate_uncertainty).
+// A parameter whose 95 % interval +/- 2 sigma (sigma from propagate_uncertainty) is wider
+// than its whole design range is not determined by the targets: any value in the range
+// reproduces them within their uncertainty and the surfaces' error, so the solution's value
+// of it is arbitrary. One whose interval is wider than half the range is weakly determined.
+// Says so, with how much each target's surface changes across the range (|J_ij| times the
+// range, in the target's unit and in units of its uncertainty). Infinite sigma has its own
+// warning (propagate_uncertainty).
 void determination_warnings(const Problem& p, CalibrationResult& r) {
   for (std::size_t j = 0; j < p.parameters.size(); ++j) {
     const Parameter& q = p.parameters[j];
@@ -162,11 +163,13 @@ void determination_warnings(const Problem& p, CalibrationResult& r) {
       effects += (i ? ", " : "") + p.targets[i].name + " by " + fmt(change) + " " + p.targets[i].unit + " (" +
                  fmt(change / p.targets[i].uncertainty) + " uncertainties)";
     }
-    r.warnings.push_back(q.name + " is not determined by these targets: +/- 2 sigma = +/- " + fmt(2.0 * sigma) + " " +
-                         q.unit + " is wider than its design range " + fmt(q.lower) + " .. " + fmt(q.upper) + " " +
-                         q.unit + " (across it the surfaces change " + effects +
-                         "); its value in the solution is arbitrary: fix it from other data, or add a target that "
-                         "depends on it");
+    const bool arbitrary = 2.0 * sigma > range;
+    r.warnings.push_back(q.name + (arbitrary ? " is not determined" : " is only weakly determined") +
+                         " by these targets: +/- 2 sigma = +/- " + fmt(2.0 * sigma) + " " + q.unit + " is wider than " +
+                         (arbitrary ? "its" : "half its") + " design range " + fmt(q.lower) + " .. " + fmt(q.upper) +
+                         " " + q.unit + " (across it the surfaces change " + effects + "); " +
+                         (arbitrary ? "its value in the solution is arbitrary" : "its value in the solution is rough") +
+                         ": fix it from other data, or add a target that depends on it");
   }
 }
 

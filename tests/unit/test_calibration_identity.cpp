@@ -275,6 +275,17 @@ TEST(CalibrationIdentity, AParameterTheTargetsHardlyFeelIsReportedAsNotDetermine
             std::string::npos) << cs;
   EXPECT_TRUE(cn.empty()) << cn;
   // A well-determined problem (the linear compression model) says nothing of the kind.
+  // A cohesion known 3.6x less well: sigma(Cn) = sqrt((0.005 * 2000)^2 + (80 * 0.016)^2) /
+  // 10.675 = 0.944 N: 4 sigma is more than the range 2 N, 2 sigma less: weakly determined.
+  p.targets[0].uncertainty = 2000.0;
+  const CalibrationResult weak = calibrate_paper(p, model, {});
+  EXPECT_NEAR(weak.sigma[0], 0.944, 0.001);
+  std::string cn_weak;
+  for (const auto& w : weak.warnings)
+    if (w.rfind("Cn is only weakly determined", 0) == 0) cn_weak = w;
+  EXPECT_NE(cn_weak.find("+/- 2 sigma = +/- 1.88"), std::string::npos) << cn_weak;
+  EXPECT_NE(cn_weak.find("wider than half its design range 0.5 .. 2.5 N"), std::string::npos) << cn_weak;
+  EXPECT_NE(cn_weak.find("its value in the solution is rough"), std::string::npos) << cn_weak;
   const CalibrationResult ok =
       calibrate_paper(compression_problem(kA * Eigen::Vector2d(437e3, 0.34) + kB, Eigen::Vector2d(1e4, 2e6)), linear_model, {});
   for (const auto& w : ok.warnings) EXPECT_EQ(w.find("is not determined"), std::string::npos) << w;
