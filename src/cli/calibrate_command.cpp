@@ -13,6 +13,7 @@
 #include "calibration/spec.hpp"
 #include "config/config_error.hpp"
 #include "core/version.hpp"
+#include "io/format_number.hpp"
 #include "io/output_dir.hpp"
 #include "io/summary.hpp"
 
@@ -125,7 +126,8 @@ int calibrate_command(const CalibrateOptions& opt) {
   if (spec.shared_packing) ctx.notes = "Packing: " + dem.shared_packing_note() + ".";
   if (spec.stage == Stage::kShear) {
     ctx.notes = "Each design run is a shear series at the loads";
-    for (double l : spec.loads) ctx.notes += " " + std::to_string(l) + " Pa";
+    for (std::size_t k = 0; k < spec.loads.size(); ++k)
+      ctx.notes += (k ? ", " : " ") + format_significant(spec.loads[k], 6) + " Pa";
     ctx.notes += " from one settled sample (bond strengths do not act before loading); C and tan(Phi) from the "
                  "Mohr-Coulomb line through the shear strengths (" + spec.strength.describe() + ").";
   }
