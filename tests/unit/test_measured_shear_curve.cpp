@@ -56,6 +56,15 @@ class MeasuredShearCurveTest : public ::testing::Test {
     }
     return "";
   }
+  // "key | reason" of the ConfigError read_spec throws for this spec text, or "no error".
+  std::string spec_error(const std::string& spec_text) const {
+    try {
+      read_spec(write("bad.toml", spec_text));
+    } catch (const ConfigError& e) {
+      return e.key() + " | " + e.reason();
+    }
+    return "no error";
+  }
   fs::path dir_;
 };
 
@@ -195,14 +204,7 @@ TEST_F(MeasuredShearCurveTest, SpecTakesTheTargetsFromTheCurves) {
 TEST_F(MeasuredShearCurveTest, SpecErrorsNameTheCurveKey) {
   even_curve("low.csv", 3.0);
   even_curve("short.csv", 2.0);
-  auto error = [&](const std::string& measured) -> std::string {
-    try {
-      read_spec(write("spec.toml", shear_spec(measured)));
-    } catch (const ConfigError& e) {
-      return e.key() + " | " + e.reason();
-    }
-    return "no error";
-  };
+  auto error = [&](const std::string& measured) { return spec_error(shear_spec(measured)); };
   const std::string both = error("results = \"r.csv\"\n[[measured.curves]]\nnormal_stress = 2e4\nfile = \"low.csv\"\n");
   EXPECT_EQ(both.rfind("measured.curves | give either", 0), 0u) << both;
   const std::string neither = error("");
@@ -247,14 +249,7 @@ TEST_F(MeasuredShearCurveTest, PeakStrengthSpecReadsThePeakOfEachCurve) {
   EXPECT_FALSE(w.strength.peak);
   EXPECT_NEAR(w.measured_curves[0].shear_strength, 1000.0 + 50.0 * 2.25 + 100.0, 1e-9);
   // Errors: an unknown definition, a width without the peak, a curve shorter than the width.
-  auto error = [&](const std::string& measured) -> std::string {
-    try {
-      read_spec(write("bad.toml", shear_spec(measured)));
-    } catch (const ConfigError& e) {
-      return e.key() + " | " + e.reason();
-    }
-    return "no error";
-  };
+  auto error = [&](const std::string& measured) { return spec_error(shear_spec(measured)); };
   const std::string kind = error("strength = \"max\"\n" + curves);
   EXPECT_EQ(kind.rfind("measured.strength | must be \"window\"", 0), 0u) << kind;
   const std::string width = error("peak_width = 0.001\n" + curves);
