@@ -274,12 +274,13 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
   rec.id = fp;
   rec.x = x;
   rec.replicate = replicate;
+  // The peak strength is read from the load curves a run keeps (peak_targets).
+  const bool reads_peaks = spec_.stage == Stage::kShear && spec_.strength.peak;
   if (fs::exists(summary)) {
     const auto s = nlohmann::json::parse(std::ifstream(summary));
     // A run reuses a finished one unless the spec needs what the older run did not keep
     // (the load curves, for the peak strength): then it runs again in its place.
-    const bool needs_curves = spec_.stage == Stage::kShear && spec_.strength.peak;
-    if (s.value("fingerprint", "") == fp && (!needs_curves || has_load_curves(dir))) {
+    if (s.value("fingerprint", "") == fp && (!reads_peaks || has_load_curves(dir))) {
       rec.outputs = s["outputs"];
       rec.reused = true;
       rec.wall_seconds = s.value("wall_seconds", 0.0);
@@ -326,7 +327,7 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
     rec.wall_seconds = wall;
     rec.made_by = git_revision();
   }
-  rec.y = spec_.stage == Stage::kShear && spec_.strength.peak ? peak_targets(dir, fp) : targets_from(rec.outputs, fp);
+  rec.y = reads_peaks ? peak_targets(dir, fp) : targets_from(rec.outputs, fp);
   if (verbose_) {
     std::string line = "  run " + fp + ":";
     for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j) {

@@ -43,14 +43,6 @@ double curve_strength(const std::vector<double>& displacement, const std::vector
   return mean.value();
 }
 
-MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double normal_stress, StrengthWindow window,
-                                             const std::string& spec_file, const std::string& key,
-                                             std::vector<std::string>& warnings) {
-  StrengthDefinition mean;
-  mean.window = window;
-  return read_measured_shear_curve(csv, normal_stress, mean, spec_file, key, warnings);
-}
-
 MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double normal_stress,
                                              const StrengthDefinition& strength, const std::string& spec_file,
                                              const std::string& key, std::vector<std::string>& warnings) {
@@ -65,7 +57,6 @@ MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double norm
   c.file = csv;
   c.normal_stress = normal_stress;
   c.strength = strength;
-  c.window = window;
   c.rows = d.size();
   if (d.empty()) throw ConfigError(spec_file, key, csv + ": the curve has no rows after its header line");
   for (std::size_t k = 1; k < d.size(); ++k)
@@ -76,8 +67,8 @@ MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double norm
                                             "): the displacement must increase strictly along the curve (sort the "
                                             "rows; remove repeated rows and any unloading part)");
   c.max_displacement = d.back();
+  c.shear_strength = curve_strength(d, tau, strength, c.window_points, c.peak_displacement);
   if (strength.peak) {
-    c.shear_strength = curve_strength(d, tau, strength, c.window_points, c.peak_displacement);
     if (c.window_points == 0)
       throw ConfigError(spec_file, key, csv + ": the curve spans " + fmt(d.back() - d.front()) +
                                             " m of shear displacement, less than the peak width " +
@@ -98,14 +89,11 @@ MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double norm
                                           " m (shear_box.strength_window_end; window " + fmt(window.start) + " .. " +
                                           fmt(window.end) + " m): supply the whole curve, or end the window earlier "
                                           "for the simulation and the measurement alike in the spec's [model] set");
-  const ShearStrengthMean mean = shear_strength_of_curve(d, tau, window);
-  c.window_points = mean.samples();
   if (c.window_points < 2)
     throw ConfigError(spec_file, key, csv + ": " + std::to_string(c.window_points) + " row(s) inside the strength "
                                           "window " + fmt(window.start) + " .. " + fmt(window.end) +
                                           " m; at least 2 are needed for a mean shear stress: supply a curve sampled "
                                           "more densely");
-  c.shear_strength = mean.value();
   double step_min = 0.0, step_max = 0.0;
   bool first = true;
   for (std::size_t k = 1; k < d.size(); ++k) {

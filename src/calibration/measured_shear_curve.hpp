@@ -34,7 +34,6 @@ struct MeasuredShearCurve {
   std::string file;
   double normal_stress = 0.0;      // Pa, as the spec states it
   StrengthDefinition strength;
-  StrengthWindow window;           // m (= strength.window)
   std::size_t rows = 0;
   double max_displacement = 0.0;   // m, the curve's last displacement
   std::size_t window_points = 0;   // rows inside the window (peak mode: inside the peak's interval)
@@ -51,11 +50,8 @@ double curve_strength(const std::vector<double>& displacement, const std::vector
 // missing file, missing column, a cell that is not a number, displacement not strictly
 // increasing, a curve that ends before the window does, fewer than 2 rows in the window.
 // Uneven displacement steps inside the window add a warning.
-MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double normal_stress, StrengthWindow window,
-                                             const std::string& spec_file, const std::string& key,
-                                             std::vector<std::string>& warnings);
-// The same with either definition; peak mode: a curve shorter than the peak width, or
-// fewer than 2 rows in the peak's interval, is an error.
+// Peak mode: a curve shorter than the peak width, or fewer than 2 rows in the peak's
+// interval, is an error; a peak in the curve's last peak width adds a warning.
 MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double normal_stress,
                                              const StrengthDefinition& strength, const std::string& spec_file,
                                              const std::string& key, std::vector<std::string>& warnings);

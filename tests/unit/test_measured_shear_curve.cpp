@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const StrengthWindow kWindow{0.0015, 0.003};  // m, tests/data/small_shear.toml
+const StrengthDefinition kWindow{false, {0.0015, 0.003}};  // mean over 1.5-3 mm, tests/data/small_shear.toml
 
 class MeasuredShearCurveTest : public ::testing::Test {
  protected:
