@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
+#include "engine/lane_law.hpp"
 #include "engine/pair_force.hpp"
 
 namespace colza::detail {
@@ -69,8 +70,9 @@ inline void load_lane(PairBatch& b, const ParticleArrays& p, std::size_t c, Inde
 }
 
 // The law for every lane (physics.md section 2, steps 1-6, for a contact that existed at the
-// start of the step), with the pair parameters q of the one particle material. Each line is
-// the scalar reference's expression; see pair_force.hpp and contact_law.hpp for the physics.
+// start of the step), with the pair parameters q of the one particle material: the pair
+// geometry here, the law in lane_law.hpp. Each line is the scalar reference's expression;
+// see pair_force.hpp and contact_law.hpp for the physics.
 template <class Bond>
 inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& q, double dt, double half_dt) {
   constexpr bool kBonds = !std::is_same_v<Bond, NoBond>;
@@ -106,45 +108,13 @@ inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& 
     // Twist about the previous normal: dt/2 (w1 + w2) . n_old (rad).
     const double hx = b.prev_normal[0][l], hy = b.prev_normal[1][l], hz = b.prev_normal[2][l];
     const double twist = half_dt * (((wix + wjx) * hx + (wiy + wjy) * hy) + (wiz + wjz) * hz);
-    // Step 1: Fn = Kn un (N).
-    const double fn = kn * overlap;
-    // Step 2: rotate the stored shear force into the new tangent plane:
-    //   Fs -= Fs x (n_old x n);  Fs -= Fs x (twist n_old).
-    const double rx = hy * nz - hz * ny, ry = hz * nx - hx * nz, rz = hx * ny - hy * nx;
-    double fx = b.fs[0][l], fy = b.fs[1][l], fz = b.fs[2][l];
-    {
-      const double cx = fy * rz - fz * ry, cy = fz * rx - fx * rz, cz = fx * ry - fy * rx;
-      fx -= cx;
-      fy -= cy;
-      fz -= cz;
-    }
-    {
-      const double tx = twist * hx, ty = twist * hy, tz = twist * hz;
-      const double cx = fy * tz - fz * ty, cy = fz * tx - fx * tz, cz = fx * ty - fy * tx;
-      fx -= cx;
-      fy -= cy;
-      fz -= cz;
-    }
-    // Step 3: trial shear force Fs -= Ks dus (N).
-    fx -= ks * sx;
-    fy -= ks * sy;
-    fz -= ks * sz;
-    const double fs2 = (fx * fx + fy * fy) + fz * fz;
-    // Steps 4-5: an intact bond holds unless -Fn > Cn or |Fs| > Cs (those lanes fall back);
-    // an unbonded contact that lost its overlap falls back (it is removed); otherwise the
-    // Coulomb cap |Fs| <= mu max(Fn, 0) with slip energy (F_trial - F).F / Ks (J).
-    // (Bitwise & and | instead of && and ||: no branches, so the loop vectorises.)
-    const bool bonded = kBonds & (b.bonded[l] != 0.0);
-    const bool bond_breaks = (-fn > cn) | (fs2 > cs * cs);
-    const bool falls_back = (bonded & bond_breaks) | (!bonded & (overlap < 0.0));
-    const double max_fs = mu * std::max(fn, 0.0);
-    const bool slides = !bonded & (fs2 > max_fs * max_fs);
-    const double scale = max_fs / std::sqrt(fs2);
-    const double cx = slides ? fx * scale : fx, cy = slides ? fy * scale : fy, cz = slides ? fz * scale : fz;
-    b.slip[l] = slides ? (((fx - cx) * cx + (fy - cy) * cy) + (fz - cz) * cz) / ks : 0.0;
-    b.fallback[l] = falls_back ? 1.0 : 0.0;
-    // Step 6: force on body 2, F = Fn n + Fs, and the torques arm x F.
-    const double Fx = fn * nx + cx, Fy = fn * ny + cy, Fz = fn * nz + cz;
+    const LaneForce r = lane_law<kBonds>(LaneContact{nx, ny, nz, overlap, sx, sy, sz, twist, hx, hy, hz, b.fs[0][l],
+                                                     b.fs[1][l], b.fs[2][l], b.bonded[l] != 0.0},
+                                         kn, ks, mu, cn, cs);
+    b.slip[l] = r.slip;
+    b.fallback[l] = r.falls_back ? 1.0 : 0.0;
+    // Torques arm x F of the force on body 2.
+    const double Fx = r.Fx, Fy = r.Fy, Fz = r.Fz;
     b.f[0][l] = Fx;
     b.f[1][l] = Fy;
     b.f[2][l] = Fz;
@@ -154,13 +124,13 @@ inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& 
     b.torque_j[0][l] = ajy * Fz - ajz * Fy;
     b.torque_j[1][l] = ajz * Fx - ajx * Fz;
     b.torque_j[2][l] = ajx * Fy - ajy * Fx;
-    b.fs_new[0][l] = cx;
-    b.fs_new[1][l] = cy;
-    b.fs_new[2][l] = cz;
+    b.fs_new[0][l] = r.fsx;
+    b.fs_new[1][l] = r.fsy;
+    b.fs_new[2][l] = r.fsz;
     b.normal[0][l] = nx;
     b.normal[1][l] = ny;
     b.normal[2][l] = nz;
-    b.fn[l] = fn;
+    b.fn[l] = r.fn;
   }
 }
 

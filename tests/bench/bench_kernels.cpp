@@ -7,12 +7,14 @@
 #include <boost/random/mersenne_twister.hpp>
 #include <boost/random/uniform_real_distribution.hpp>
 #include <cmath>
+#include <cstdlib>
 
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
 #include "engine/stepper.hpp"
+#include "io/packing_file.hpp"
 
 using namespace colza;
 
@@ -41,6 +43,29 @@ World packing(std::size_t n) {
     w.particles.add(pos, rad(rng), 1250.0, 0, Vec3(1e-3 * u(rng), 1e-3 * u(rng), 1e-3 * u(rng)));
   }
   w.walls.push_back(Wall::plane("floor", Vec3::Zero(), Vec3::UnitZ()));
+  return w;
+}
+
+// The settled oedometer packing named by the environment variable COLZA_BENCH_PACKING (a
+// packing file, e.g. the one tests/bench/compare_codes.py prepares in
+// /tmp/colza-compare/prep/packing.txt), in its cylinder (radius 50 mm) on the floor, with the
+// piston resting on the top sphere and moving down at 500 mm/min: the benchmark's real
+// contact statistics (about 2.2 contacts and 3.1 candidate pairs per particle) instead of the
+// lattice's. Empty world when the variable is unset.
+World oedometer_packing() {
+  World w;
+  const char* file = std::getenv("COLZA_BENCH_PACKING");
+  if (!file) return w;
+  double top = 0.0;
+  for (const PackedSphere& s : read_packing(file, "COLZA_BENCH_PACKING")) {
+    w.particles.add(s.position, s.radius, 1250.0);
+    top = std::max(top, s.position[2] + s.radius);
+  }
+  w.walls.push_back(Wall::plane("bottom", Vec3::Zero(), Vec3::UnitZ()));
+  w.walls.push_back(Wall::cylinder("envelope", Vec3::Zero(), Vec3::UnitZ(), 0.05, 0.0, top + 0.01));
+  Wall piston = Wall::plane("piston", Vec3(0.0, 0.0, top), -Vec3::UnitZ());
+  piston.velocity = Vec3(0.0, 0.0, -0.5 / 60.0);
+  w.walls.push_back(piston);
   return w;
 }
 
@@ -80,6 +105,48 @@ void BM_FullStep(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
+// As BM_ContactKernel and BM_FullStep, on the settled oedometer packing (COLZA_BENCH_PACKING)
+// with dt = 1e-5 s (the compare_codes.py benchmark's).
+void BM_OedometerForces(benchmark::State& state) {
+  set_threads(state);
+  World w = oedometer_packing();
+  if (w.particles.size() == 0) {
+    state.SkipWithError("set COLZA_BENCH_PACKING to a packing file");
+    return;
+  }
+  PhysicsSettings s = physics();
+  s.time_step.automatic = false;
+  s.time_step.fixed_dt = 1e-5;
+  Stepper stepper(s);
+  stepper.prepare(w);
+  for (auto _ : state) {
+    stepper.begin_step(w);
+    ++w.step;
+    benchmark::DoNotOptimize(w.particles.force.data());
+  }
+  state.counters["pairs"] = static_cast<double>(w.contacts.particle_pairs.size());
+  state.counters["contacts"] = static_cast<double>(w.contacts.touching_particle_contacts());
+  state.counters["wall_pairs"] = static_cast<double>(w.contacts.wall_pairs.size());
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(w.particles.size()));
+}
+
+void BM_OedometerStep(benchmark::State& state) {
+  set_threads(state);
+  World w = oedometer_packing();
+  if (w.particles.size() == 0) {
+    state.SkipWithError("set COLZA_BENCH_PACKING to a packing file");
+    return;
+  }
+  PhysicsSettings s = physics();
+  s.time_step.automatic = false;
+  s.time_step.fixed_dt = 1e-5;
+  Stepper stepper(s);
+  stepper.prepare(w);
+  for (auto _ : state) stepper.step(w);
+  state.counters["rebuilds"] = static_cast<double>(stepper.neighbours().rebuild_count());
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(w.particles.size()));
+}
+
 void BM_NeighbourRebuild(benchmark::State& state) {
   World w = packing(static_cast<std::size_t>(state.range(0)));
   NeighbourSearch search(0.5e-3);
@@ -116,6 +183,8 @@ void BM_Integrate(benchmark::State& state) {
 
 BENCHMARK(BM_ContactKernel)->ArgsProduct({{2287, 9805}, {1, 2}})->UseRealTime();
 BENCHMARK(BM_FullStep)->ArgsProduct({{2287, 9805}, {1, 2}})->UseRealTime();
+BENCHMARK(BM_OedometerForces)->ArgsProduct({{0}, {1, 2}})->UseRealTime();
+BENCHMARK(BM_OedometerStep)->ArgsProduct({{0}, {1, 2}})->UseRealTime();
 BENCHMARK(BM_NeighbourRebuild)->Arg(2287)->Arg(9805);
 BENCHMARK(BM_RebuildCheck)->Arg(2287)->Arg(9805);
 BENCHMARK(BM_Integrate)->ArgsProduct({{2287, 9805}, {1, 2}})->UseRealTime();
