@@ -13,6 +13,7 @@
 #include "engine/pair_force.hpp"
 #include "engine/pair_sinks.hpp"
 #include "engine/force_partition.hpp"
+#include "engine/wall_batch.hpp"
 #include "engine/wall_pair_force.hpp"
 
 namespace colza {
@@ -45,6 +46,7 @@ using detail::vec;
 using detail::kHasBatchedKernel;
 using detail::particle_pairs_batched;
 using detail::wall_pair_force;
+using detail::wall_pairs_batched;
 using detail::ForceLoopTotals;
 using detail::LogSink;
 using detail::SerialSink;
@@ -134,6 +136,35 @@ struct ScatterOrStore {
   }
 };
 
+// Where a wall pair's force goes. Serial: onto the sphere and, opposite, the wall (with the
+// ledger's wall power). Threaded: onto the sphere (its thread's own), and kept by pair for the
+// walls' sums after the parallel region, in wall-pair order.
+struct WallTakesForce {
+  Vec3* force;
+  Vec3* torque;
+  Wall& wall;
+  ForceLoopTotals& totals;
+  void carries(std::size_t, Index i, const Vec3& f, const Vec3& t) {
+    force[i] += f;
+    torque[i] += t;
+    wall_takes(wall, f, totals);
+  }
+  void none(std::size_t) {}
+};
+struct StoreWallForce {
+  Vec3* force;
+  Vec3* torque;
+  Vec3* wall_force;
+  std::uint8_t* wall_carries;
+  void carries(std::size_t c, Index i, const Vec3& f, const Vec3& t) {
+    wall_carries[c] = 1;
+    wall_force[c] = f;
+    force[i] += f;
+    torque[i] += t;
+  }
+  void none(std::size_t c) { wall_carries[c] = 0; }
+};
+
 // Particle pairs [begin, end) in pair order: the batched kernel for the built-in law, the
 // scalar reference for any other slot combination (same results, see pair_batch.hpp).
 template <class Normal, class Tangential, class Bond, class Out, class Sink>
@@ -159,6 +190,34 @@ template <class Normal, class Tangential, class Bond, class Out, class Sink>
     if (particle_pair_force(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt, i, j,
                             history[c], f, arm_i, arm_j, sink))
       out.carries(c, i, j, f, cross(arm_i, f), cross(arm_j, f));
+    else
+      out.none(c);
+  }
+}
+
+// Wall pairs [begin, end) of one wall in pair order: the batched kernel for the built-in law
+// with one particle material, the scalar function otherwise (same results, see
+// wall_batch.hpp). `out.carries(c, i, f, torque)`, `out.none(c)` as in wall_pairs_batched.
+template <class Normal, class Tangential, class Out, class Sink>
+[[gnu::always_inline]] inline void wall_pair_range(const Normal& normal_law, const Tangential& tangential_law,
+                                                   const ParticleArrays& p, const Wall& wall, const PairTable& pairs,
+                                                   double dt, WallPairList& pw, std::size_t begin, std::size_t end,
+                                                   Out& out, Sink& sink) {
+  const double half_dt = 0.5 * dt;
+  const Index* particle = pw.particle.data();
+  ContactHistory* history = pw.history.data();
+  if constexpr (kHasBatchedKernel<Normal, Tangential>) {
+    if (pairs.particle_material_count() == 1) {
+      wall_pairs_batched(normal_law, tangential_law, p, wall, pairs, dt, half_dt, particle, history, begin, end, out,
+                         sink);
+      return;
+    }
+  }
+  for (std::size_t c = begin; c < end; ++c) {
+    Vec3 f, torque;
+    if (wall_pair_force(normal_law, tangential_law, p, wall, pairs, dt, half_dt, particle[c], history[c], f, torque,
+                        sink))
+      out.carries(c, particle[c], f, torque);
     else
       out.none(c);
   }
@@ -204,7 +263,7 @@ template <class Normal, class Tangential, class Bond>
   const std::size_t n_walls = world.walls.size(), T = static_cast<std::size_t>(part.threads);
   Vec3* force = p.force.data();
   Vec3* torque = p.torque.data();
-  const double dt = world.dt, half_dt = 0.5 * dt;
+  const double dt = world.dt;
   ++part.steps_since_build;
   for (auto& log : part.pair_logs) log.clear();
   for (auto& log : part.wall_logs) log.clear();
@@ -233,6 +292,7 @@ template <class Normal, class Tangential, class Bond>
     const Vec3* slot_force = part.slot_force.data();
     const Vec3* slot_torque_1 = part.slot_torque_1.data();
     const Vec3* slot_torque_2 = part.slot_torque_2.data();
+    StoreWallForce wall_out{force, torque, part.wall_force.data(), part.wall_carries.data()};
     for (std::size_t r = first_range; r < T; r += stride) {
       for (std::size_t b = part.boundary_begin[r]; b < part.boundary_begin[r + 1]; ++b) {
         Vec3 fi = Vec3::Zero(), ti = Vec3::Zero();
@@ -249,21 +309,10 @@ template <class Normal, class Tangential, class Bond>
         force[part.boundary_particles[b]] = fi;
         torque[part.boundary_particles[b]] = ti;
       }
-      for (std::size_t w = 0; w < n_walls; ++w) {
-        const Wall& wall = world.walls[w];
-        for (std::size_t c = part.wall_pair_begin[w * (T + 1) + r], end = part.wall_pair_begin[w * (T + 1) + r + 1];
-             c < end; ++c) {
-          const Index i = pw.particle[c];
-          Vec3 f, moment;
-          const bool carries = wall_pair_force(normal_law, tangential_law, p, wall, pairs, dt, half_dt, i,
-                                               pw.history[c], f, moment, part.wall_logs[w * T + r]);
-          part.wall_carries[c] = carries;
-          if (!carries) continue;
-          part.wall_force[c] = f;
-          force[i] += f;
-          torque[i] += moment;
-        }
-      }
+      for (std::size_t w = 0; w < n_walls; ++w)
+        wall_pair_range(normal_law, tangential_law, p, world.walls[w], pairs, dt, pw,
+                        part.wall_pair_begin[w * (T + 1) + r], part.wall_pair_begin[w * (T + 1) + r + 1], wall_out,
+                        part.wall_logs[w * T + r]);
       if (motion) integrate_motion(p, *motion, dt, part.particle_begin[r], part.particle_begin[r + 1]);
     }
     busy += seconds_now() - started;
@@ -283,20 +332,17 @@ template <class Normal, class Tangential>
 [[gnu::flatten]] void wall_pairs_serial(const Normal& normal_law, const Tangential& tangential_law, World& world,
                                          const PairTable& pairs, ForceLoopTotals& totals) {
   ParticleArrays& p = world.particles;
-  const double dt = world.dt, half_dt = 0.5 * dt;
+  const double dt = world.dt;
   auto& pw = world.contacts.wall_pairs;
   clear_wall_sums(world.walls);
   SerialSink sink{totals};
-  const std::size_t n_wall_pairs = pw.size();
-  for (std::size_t c = 0; c < n_wall_pairs; ++c) {
-    Wall& wall = world.walls[pw.wall[c]];
-    const Index i = pw.particle[c];
-    Vec3 f, torque;
-    if (!wall_pair_force(normal_law, tangential_law, p, wall, pairs, dt, half_dt, i, pw.history[c], f, torque, sink))
-      continue;
-    p.force[i] += f;
-    p.torque[i] += torque;
-    wall_takes(wall, f, totals);
+  // Wall pairs are sorted by wall: one segment per wall, in wall-pair order.
+  for (std::size_t begin = 0, end = 0; begin < pw.size(); begin = end) {
+    Wall& wall = world.walls[pw.wall[begin]];
+    end = begin;
+    while (end < pw.size() && pw.wall[end] == pw.wall[begin]) ++end;
+    WallTakesForce out{p.force.data(), p.torque.data(), wall, totals};
+    wall_pair_range(normal_law, tangential_law, p, wall, pairs, dt, pw, begin, end, out, sink);
   }
 }
 

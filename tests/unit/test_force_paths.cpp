@@ -32,6 +32,7 @@ struct Setup {
   int particle_materials = 1;  // 2 identical materials force the scalar reference loop
   bool bonds = false;
   bool walls_only_between_halves = false;  // no integration sums; motion may go into the threaded force loop
+  bool shaped_walls = false;  // a cylinder and a rectangle (face, edge and corner contacts) besides planes
 };
 
 World make_world(const Setup& setup) {
@@ -58,6 +59,19 @@ World make_world(const Setup& setup) {
     w.walls.push_back(Wall::plane("high" + std::to_string(axis), hi * n, -n));
   }
   w.walls.back().velocity = Vec3(0.002, 0.001, -0.02);  // the lid squeezes and drags (wall power, slip on walls)
+  if (setup.shaped_walls) {
+    // The low-x plane becomes a rectangle in the same plane whose edges lie 0.3 mm short of
+    // lattice rows y = 2, 7 and z = 2, 8: the spheres of those rows touch an edge (or a
+    // corner) at about 0.1 mm of overlap, those inside touch the face.
+    const double lo = -kRadius + 0.1e-3;
+    w.walls[0] = Wall::rectangle("plate", Vec3(lo, 4.5 * spacing, 5.0 * spacing), Vec3::UnitX(), Vec3::UnitY(),
+                                 2.5 * spacing - 0.3e-3, 3.0 * spacing - 0.3e-3);
+    w.walls[0].velocity = Vec3(0.0, 0.003, 0.001);  // sliding in its plane: slip on the face and edges
+    // A vertical cylinder around the lattice that clips its four corner columns by ~0.1 mm.
+    const double centre = 4.5 * spacing;
+    w.walls.push_back(Wall::cylinder("envelope", Vec3(centre, centre, 0.0), Vec3::UnitZ(),
+                                     std::sqrt(2.0) * centre + kRadius - 0.1e-3, -1.0, 1.0));
+  }
   return w;
 }
 
@@ -182,7 +196,31 @@ TEST(ForcePaths, BatchedKernelGivesTheScalarReferenceBitsWithBondsBreaking) {
   expect_same_pair_energies(batched.ledger, reference.ledger);
 }
 
+// The batched wall kernel (engine/wall_batch.hpp) on every wall shape: a rectangle's face,
+// edges and corners, a cylinder, planes.
+TEST(ForcePaths, BatchedWallKernelGivesTheScalarReferenceBitsOnEveryShape) {
+  const PathRun batched = run_path({.particle_materials = 1, .shaped_walls = true}, 1);
+  const PathRun reference = run_path({.particle_materials = 2, .shaped_walls = true}, 1);
+  // Touching wall contacts per wall at the end: the rectangle and the cylinder carry some.
+  std::vector<std::size_t> touching(batched.world.walls.size(), 0);
+  const auto& pw = batched.world.contacts.wall_pairs;
+  for (std::size_t c = 0; c < pw.size(); ++c) touching[pw.wall[c]] += pw.history[c].touching;
+  EXPECT_GT(touching[0], 20u);                   // rectangle "plate"
+  EXPECT_GT(touching.back(), 10u);               // cylinder "envelope"
+  EXPECT_GT(batched.ledger.slip_dissipated, 0.0);
+  expect_same_state(batched.world, reference.world);
+  expect_same_pair_energies(batched.ledger, reference.ledger);
+}
+
 #ifdef _OPENMP
+TEST(ForcePaths, TwoThreadsGiveTheOneThreadBitsWithShapedWalls) {
+  const PathRun one = run_path({.particle_materials = 1, .shaped_walls = true}, 1);
+  const PathRun two = run_path({.particle_materials = 1, .shaped_walls = true}, 2);
+  EXPECT_EQ(two.threaded_steps, 300u);
+  expect_same_state(one.world, two.world);
+  expect_same_pair_energies(one.ledger, two.ledger);
+}
+
 TEST(ForcePaths, TwoThreadsGiveTheOneThreadBits) {
   const PathRun one = run_path({1, true}, 1);
   const PathRun two = run_path({1, true}, 2);
