@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
+#include "engine/batch_driver.hpp"
 #include "engine/lane_law.hpp"
 #include "engine/pair_force.hpp"
 
@@ -147,40 +148,24 @@ template <class Normal, class Tangential, class Bond, class Out, class Sink>
                                                           Out& out, Sink& sink) {
   const PairParameters& q = pairs.particle_particle(0, 0);
   PairBatch b;
-  std::size_t c = begin;
-  while (c < end) {
-    const std::size_t batch_begin = c;
-    b.count = 0;
-    for (; c < end && b.count < PairBatch::kLanes; ++c)
-      if (history[c].touching) load_lane(b, p, c, first[c], second[c], history[c]);
-    compute_lanes(b, bond_law, q, dt, half_dt);
-    int l = 0;
-    for (std::size_t k = batch_begin; k < c; ++k) {
-      const Index i = first[k], j = second[k];
-      ContactHistory& h = history[k];
-      const bool in_lane = l < b.count && b.pair[l] == k;
-      if (in_lane && b.fallback[l] == 0.0) {  // steady contact: take the lane's result
-        h.shear_force = Vec3(b.fs_new[0][l], b.fs_new[1][l], b.fs_new[2][l]);
-        h.normal = Vec3(b.normal[0][l], b.normal[1][l], b.normal[2][l]);
-        h.normal_force = b.fn[l];
+  run_in_batches(
+      b, history, begin, end, [&](std::size_t c) { load_lane(b, p, c, first[c], second[c], history[c]); },
+      [&] { compute_lanes(b, bond_law, q, dt, half_dt); },
+      [&](std::size_t k, int l) {  // steady contact: the lane's result
+        keep_lane_history(history[k], b, l);
         sink.slip(b.slip[l]);
-        out.carries(k, i, j, V3{b.f[0][l], b.f[1][l], b.f[2][l]},
+        out.carries(k, first[k], second[k], V3{b.f[0][l], b.f[1][l], b.f[2][l]},
                     V3{b.torque_i[0][l], b.torque_i[1][l], b.torque_i[2][l]},
                     V3{b.torque_j[0][l], b.torque_j[1][l], b.torque_j[2][l]});
-        ++l;
-        continue;
-      }
-      if (in_lane) ++l;
-      // Not touching at the start of the step (a new contact if the spheres overlap now), or
-      // a contact that changes state: the scalar reference law from the untouched history.
-      V3 f, arm_i, arm_j;
-      if (particle_pair_force(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt, i, j, h,
-                              f, arm_i, arm_j, sink))
-        out.carries(k, i, j, f, cross(arm_i, f), cross(arm_j, f));
-      else
-        out.none(k);
-    }
-  }
+      },
+      [&](std::size_t k) {  // a new contact if the spheres overlap now, or a change of state
+        V3 f, arm_i, arm_j;
+        if (particle_pair_force(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt,
+                                first[k], second[k], history[k], f, arm_i, arm_j, sink))
+          out.carries(k, first[k], second[k], f, cross(arm_i, f), cross(arm_j, f));
+        else
+          out.none(k);
+      });
 }
 
 }  // namespace colza::detail

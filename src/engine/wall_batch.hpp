@@ -17,6 +17,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include "engine/batch_driver.hpp"
 #include "engine/lane_law.hpp"
 #include "engine/wall_pair_force.hpp"
 
@@ -169,36 +170,23 @@ template <class Normal, class Tangential, class Out, class Sink>
                                                       std::size_t begin, std::size_t end, Out& out, Sink& sink) {
   const PairParameters& q = pairs.particle_wall(0, wall.material);
   WallBatch b;
-  std::size_t c = begin;
-  while (c < end) {
-    const std::size_t batch_begin = c;
-    b.count = 0;
-    for (; c < end && b.count < WallBatch::kLanes; ++c)
-      if (history[c].touching) load_wall_lane(b, p, c, particle[c], history[c]);
-    compute_wall_lanes(b, wall, q, dt, half_dt);
-    int l = 0;
-    for (std::size_t k = batch_begin; k < c; ++k) {
-      const Index i = particle[k];
-      ContactHistory& h = history[k];
-      const bool in_lane = l < b.count && b.pair[l] == k;
-      if (in_lane && b.fallback[l] == 0.0) {  // steady contact: take the lane's result
-        h.shear_force = Vec3(b.fs_new[0][l], b.fs_new[1][l], b.fs_new[2][l]);
-        h.normal = Vec3(b.normal[0][l], b.normal[1][l], b.normal[2][l]);
-        h.normal_force = b.fn[l];
+  run_in_batches(
+      b, history, begin, end, [&](std::size_t c) { load_wall_lane(b, p, c, particle[c], history[c]); },
+      [&] { compute_wall_lanes(b, wall, q, dt, half_dt); },
+      [&](std::size_t k, int l) {  // steady contact: the lane's result
+        keep_lane_history(history[k], b, l);
         sink.slip(b.slip[l]);
-        out.carries(k, i, Vec3(b.f[0][l], b.f[1][l], b.f[2][l]),
+        out.carries(k, particle[k], Vec3(b.f[0][l], b.f[1][l], b.f[2][l]),
                     Vec3(b.torque[0][l], b.torque[1][l], b.torque[2][l]));
-        ++l;
-        continue;
-      }
-      if (in_lane) ++l;
-      Vec3 f, torque;
-      if (wall_pair_force(normal_law, tangential_law, p, wall, pairs, dt, half_dt, i, h, f, torque, sink))
-        out.carries(k, i, f, torque);
-      else
-        out.none(k);
-    }
-  }
+      },
+      [&](std::size_t k) {
+        Vec3 f, torque;
+        if (wall_pair_force(normal_law, tangential_law, p, wall, pairs, dt, half_dt, particle[k], history[k], f,
+                            torque, sink))
+          out.carries(k, particle[k], f, torque);
+        else
+          out.none(k);
+      });
 }
 
 }  // namespace colza::detail

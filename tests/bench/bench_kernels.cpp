@@ -107,17 +107,25 @@ void BM_FullStep(benchmark::State& state) {
 
 // As BM_ContactKernel and BM_FullStep, on the settled oedometer packing (COLZA_BENCH_PACKING)
 // with dt = 1e-5 s (the compare_codes.py benchmark's).
-void BM_OedometerForces(benchmark::State& state) {
-  set_threads(state);
-  World w = oedometer_packing();
-  if (w.particles.size() == 0) {
-    state.SkipWithError("set COLZA_BENCH_PACKING to a packing file");
-    return;
-  }
+PhysicsSettings oedometer_physics() {
   PhysicsSettings s = physics();
   s.time_step.automatic = false;
   s.time_step.fixed_dt = 1e-5;
-  Stepper stepper(s);
+  return s;
+}
+
+// False (and the benchmark skipped) when COLZA_BENCH_PACKING is not set.
+bool has_packing(benchmark::State& state, const World& w) {
+  if (w.particles.size() > 0) return true;
+  state.SkipWithError("set COLZA_BENCH_PACKING to a packing file");
+  return false;
+}
+
+void BM_OedometerForces(benchmark::State& state) {
+  set_threads(state);
+  World w = oedometer_packing();
+  if (!has_packing(state, w)) return;
+  Stepper stepper(oedometer_physics());
   stepper.prepare(w);
   for (auto _ : state) {
     stepper.begin_step(w);
@@ -133,14 +141,8 @@ void BM_OedometerForces(benchmark::State& state) {
 void BM_OedometerStep(benchmark::State& state) {
   set_threads(state);
   World w = oedometer_packing();
-  if (w.particles.size() == 0) {
-    state.SkipWithError("set COLZA_BENCH_PACKING to a packing file");
-    return;
-  }
-  PhysicsSettings s = physics();
-  s.time_step.automatic = false;
-  s.time_step.fixed_dt = 1e-5;
-  Stepper stepper(s);
+  if (!has_packing(state, w)) return;
+  Stepper stepper(oedometer_physics());
   stepper.prepare(w);
   for (auto _ : state) stepper.step(w);
   state.counters["rebuilds"] = static_cast<double>(stepper.neighbours().rebuild_count());

@@ -1,0 +1,48 @@
+// The loop shared by the batched kernels (engine/pair_batch.hpp, engine/wall_batch.hpp):
+// pairs [begin, end) in chunks of Batch::kLanes pairs. The pairs of a chunk that were touching
+// at the start of the step go into lanes (`load(c)`), the lanes are computed (`compute()`),
+// then every pair of the chunk is consumed in pair order: a lane that keeps its state by
+// `steady(c, l)`, any other pair (not touching at the start of the step, or changing state)
+// by `scalar(c)`, the scalar function from the untouched history. Pair order is what keeps
+// every sum the reference loop's.
+#pragma once
+#include <cstddef>
+#include "contact/history.hpp"
+#include "core/types.hpp"
+
+namespace colza::detail {
+
+template <class Batch, class Load, class Compute, class Steady, class Scalar>
+[[gnu::always_inline]] inline void run_in_batches(Batch& b, const ContactHistory* history, std::size_t begin,
+                                                  std::size_t end, Load&& load, Compute&& compute, Steady&& steady,
+                                                  Scalar&& scalar) {
+  std::size_t c = begin;
+  while (c < end) {
+    const std::size_t batch_begin = c;
+    b.count = 0;
+    for (; c < end && b.count < Batch::kLanes; ++c)
+      if (history[c].touching) load(c);
+    compute();
+    int l = 0;
+    for (std::size_t k = batch_begin; k < c; ++k) {
+      const bool in_lane = l < b.count && b.pair[l] == k;
+      if (in_lane && b.fallback[l] == 0.0) {
+        steady(k, l);
+        ++l;
+        continue;
+      }
+      if (in_lane) ++l;
+      scalar(k);
+    }
+  }
+}
+
+// A steady lane's new history: shear force, normal, Fn.
+template <class Batch>
+[[gnu::always_inline]] inline void keep_lane_history(ContactHistory& h, const Batch& b, int l) {
+  h.shear_force = Vec3(b.fs_new[0][l], b.fs_new[1][l], b.fs_new[2][l]);
+  h.normal = Vec3(b.normal[0][l], b.normal[1][l], b.normal[2][l]);
+  h.normal_force = b.fn[l];
+}
+
+}  // namespace colza::detail
