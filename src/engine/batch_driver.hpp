@@ -45,4 +45,20 @@ template <class Batch>
   h.normal_force = b.fn[l];
 }
 
+// What a lane's law gives that both batches keep: force on body 2, new shear force, normal, Fn.
+template <class Batch, class LaneForce>
+[[gnu::always_inline]] inline void store_lane_force(Batch& b, int l, const LaneForce& r, double nx, double ny,
+                                                    double nz) {
+  b.f[0][l] = r.Fx;
+  b.f[1][l] = r.Fy;
+  b.f[2][l] = r.Fz;
+  b.fs_new[0][l] = r.fsx;
+  b.fs_new[1][l] = r.fsy;
+  b.fs_new[2][l] = r.fsz;
+  b.normal[0][l] = nx;
+  b.normal[1][l] = ny;
+  b.normal[2][l] = nz;
+  b.fn[l] = r.fn;
+}
+
 }  // namespace colza::detail

@@ -116,22 +116,13 @@ inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& 
     b.fallback[l] = r.falls_back ? 1.0 : 0.0;
     // Torques arm x F of the force on body 2.
     const double Fx = r.Fx, Fy = r.Fy, Fz = r.Fz;
-    b.f[0][l] = Fx;
-    b.f[1][l] = Fy;
-    b.f[2][l] = Fz;
     b.torque_i[0][l] = aiy * Fz - aiz * Fy;
     b.torque_i[1][l] = aiz * Fx - aix * Fz;
     b.torque_i[2][l] = aix * Fy - aiy * Fx;
     b.torque_j[0][l] = ajy * Fz - ajz * Fy;
     b.torque_j[1][l] = ajz * Fx - ajx * Fz;
     b.torque_j[2][l] = ajx * Fy - ajy * Fx;
-    b.fs_new[0][l] = r.fsx;
-    b.fs_new[1][l] = r.fsy;
-    b.fs_new[2][l] = r.fsz;
-    b.normal[0][l] = nx;
-    b.normal[1][l] = ny;
-    b.normal[2][l] = nz;
-    b.fn[l] = r.fn;
+    store_lane_force(b, l, r, nx, ny, nz);
   }
 }
 

@@ -134,19 +134,10 @@ inline void compute_wall_lanes(WallBatch& b, const Wall& wall, const PairParamet
     b.slip[l] = r.slip;
     b.fallback[l] = (r.falls_back | !g.in_range) ? 1.0 : 0.0;
     const double Fx = r.Fx, Fy = r.Fy, Fz = r.Fz;
-    b.f[0][l] = Fx;
-    b.f[1][l] = Fy;
-    b.f[2][l] = Fz;
     b.torque[0][l] = ay * Fz - az * Fy;
     b.torque[1][l] = az * Fx - ax * Fz;
     b.torque[2][l] = ax * Fy - ay * Fx;
-    b.fs_new[0][l] = r.fsx;
-    b.fs_new[1][l] = r.fsy;
-    b.fs_new[2][l] = r.fsz;
-    b.normal[0][l] = nx;
-    b.normal[1][l] = ny;
-    b.normal[2][l] = nz;
-    b.fn[l] = r.fn;
+    store_lane_force(b, l, r, nx, ny, nz);
   }
 }
 

@@ -79,10 +79,8 @@ void set_threads(benchmark::State& state) {
 
 // Forces only: Stepper::begin_step (time-step update every 100 steps, rebuild check, force
 // loop). Particles do not move, so the lists stay valid and contacts stay touching.
-void BM_ContactKernel(benchmark::State& state) {
-  set_threads(state);
-  World w = packing(static_cast<std::size_t>(state.range(0)));
-  Stepper stepper(physics());
+void run_forces_only(benchmark::State& state, World& w, const PhysicsSettings& settings) {
+  Stepper stepper(settings);
   stepper.prepare(w);
   for (auto _ : state) {
     stepper.begin_step(w);
@@ -91,7 +89,14 @@ void BM_ContactKernel(benchmark::State& state) {
   }
   state.counters["pairs"] = static_cast<double>(w.contacts.particle_pairs.size());
   state.counters["contacts"] = static_cast<double>(w.contacts.touching_particle_contacts());
-  state.SetItemsProcessed(state.iterations() * state.range(0));
+  state.counters["wall_pairs"] = static_cast<double>(w.contacts.wall_pairs.size());
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(w.particles.size()));
+}
+
+void BM_ContactKernel(benchmark::State& state) {
+  set_threads(state);
+  World w = packing(static_cast<std::size_t>(state.range(0)));
+  run_forces_only(state, w, physics());
 }
 
 // Full steps: forces, integration with local damping, wall motion (the oedometer loop).
@@ -125,17 +130,7 @@ void BM_OedometerForces(benchmark::State& state) {
   set_threads(state);
   World w = oedometer_packing();
   if (!has_packing(state, w)) return;
-  Stepper stepper(oedometer_physics());
-  stepper.prepare(w);
-  for (auto _ : state) {
-    stepper.begin_step(w);
-    ++w.step;
-    benchmark::DoNotOptimize(w.particles.force.data());
-  }
-  state.counters["pairs"] = static_cast<double>(w.contacts.particle_pairs.size());
-  state.counters["contacts"] = static_cast<double>(w.contacts.touching_particle_contacts());
-  state.counters["wall_pairs"] = static_cast<double>(w.contacts.wall_pairs.size());
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(w.particles.size()));
+  run_forces_only(state, w, oedometer_physics());
 }
 
 void BM_OedometerStep(benchmark::State& state) {
