@@ -56,7 +56,6 @@ MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double norm
   MeasuredShearCurve c;
   c.file = csv;
   c.normal_stress = normal_stress;
-  c.strength = strength;
   c.rows = d.size();
   if (d.empty()) throw ConfigError(spec_file, key, csv + ": the curve has no rows after its header line");
   for (std::size_t k = 1; k < d.size(); ++k)

@@ -33,7 +33,6 @@ struct StrengthDefinition {
 struct MeasuredShearCurve {
   std::string file;
   double normal_stress = 0.0;      // Pa, as the spec states it
-  StrengthDefinition strength;
   std::size_t rows = 0;
   double max_displacement = 0.0;   // m, the curve's last displacement
   std::size_t window_points = 0;   // rows inside the window (peak mode: inside the peak's interval)

@@ -37,7 +37,20 @@ template <class Batch, class Load, class Compute, class Steady, class Scalar>
   }
 }
 
-// A steady lane's new history: shear force, normal, Fn.
+// Opens the next lane of the batch for pair c with its history (stored shear force, previous
+// normal); returns the lane. The kernel's load function adds the bodies' state.
+template <class Batch>
+[[gnu::always_inline]] inline int open_lane(Batch& b, std::size_t c, const ContactHistory& h) {
+  const int l = b.count++;
+  b.pair[l] = c;
+  for (int d = 0; d < 3; ++d) {
+    b.fs[d][l] = h.shear_force[d];
+    b.prev_normal[d][l] = h.normal[d];
+  }
+  return l;
+}
+
+// A steady lane's new history: shear force, normal, Fn (the counterpart of open_lane).
 template <class Batch>
 [[gnu::always_inline]] inline void keep_lane_history(ContactHistory& h, const Batch& b, int l) {
   h.shear_force = Vec3(b.fs_new[0][l], b.fs_new[1][l], b.fs_new[2][l]);

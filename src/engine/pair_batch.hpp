@@ -50,8 +50,7 @@ struct PairBatch {
 // Loads contact c (touching at the start of the step) into the next lane.
 inline void load_lane(PairBatch& b, const ParticleArrays& p, std::size_t c, Index i, Index j,
                       const ContactHistory& h) {
-  const int l = b.count++;
-  b.pair[l] = c;
+  const int l = open_lane(b, c, h);
   const Vec3 &xi = p.position[i], &xj = p.position[j];
   const Vec3 &vi = p.velocity[i], &vj = p.velocity[j];
   const Vec3 &wi = p.angular_velocity[i], &wj = p.angular_velocity[j];
@@ -62,8 +61,6 @@ inline void load_lane(PairBatch& b, const ParticleArrays& p, std::size_t c, Inde
     b.vj[d][l] = vj[d];
     b.wi[d][l] = wi[d];
     b.wj[d][l] = wj[d];
-    b.fs[d][l] = h.shear_force[d];
-    b.prev_normal[d][l] = h.normal[d];
   }
   b.ri[l] = p.radius[i];
   b.rj[l] = p.radius[j];

@@ -36,15 +36,12 @@ struct WallBatch {
 };
 
 inline void load_wall_lane(WallBatch& b, const ParticleArrays& p, std::size_t c, Index i, const ContactHistory& h) {
-  const int l = b.count++;
-  b.pair[l] = c;
+  const int l = open_lane(b, c, h);
   const Vec3 &x = p.position[i], &v = p.velocity[i], &w = p.angular_velocity[i];
   for (int d = 0; d < 3; ++d) {
     b.x[d][l] = x[d];
     b.v[d][l] = v[d];
     b.w[d][l] = w[d];
-    b.fs[d][l] = h.shear_force[d];
-    b.prev_normal[d][l] = h.normal[d];
   }
   b.r[l] = p.radius[i];
 }
