@@ -35,7 +35,9 @@ struct LaneForce {
 };
 
 // kn, ks (N/m), mu: the pair's parameters; cn, cs (N): bond strengths (unused without bonds).
-template <bool kBonds>
+// kSlip: compute the slip energy (false when no energy ledger is kept: slip is then 0 and its
+// division is skipped; nothing else changes).
+template <bool kBonds, bool kSlip>
 [[gnu::always_inline]] inline LaneForce lane_law(const LaneContact& c, double kn, double ks, double mu, double cn,
                                                  double cs) {
   // Step 1: Fn = Kn un (N).
@@ -74,7 +76,10 @@ template <bool kBonds>
   const bool slides = !bonded & (fs2 > max_fs * max_fs);
   const double scale = max_fs / std::sqrt(fs2);
   const double cx = slides ? fx * scale : fx, cy = slides ? fy * scale : fy, cz = slides ? fz * scale : fz;
-  out.slip = slides ? (((fx - cx) * cx + (fy - cy) * cy) + (fz - cz) * cz) / ks : 0.0;
+  if constexpr (kSlip)
+    out.slip = slides ? (((fx - cx) * cx + (fy - cy) * cy) + (fz - cz) * cz) / ks : 0.0;
+  else
+    out.slip = 0.0;
   // Step 6: force on body 2, F = Fn n + Fs.
   out.Fx = fn * c.nx + cx;
   out.Fy = fn * c.ny + cy;

@@ -71,7 +71,7 @@ inline void load_lane(PairBatch& b, const ParticleArrays& p, std::size_t c, Inde
 // start of the step), with the pair parameters q of the one particle material: the pair
 // geometry here, the law in lane_law.hpp. Each line is the scalar reference's expression;
 // see pair_force.hpp and contact_law.hpp for the physics.
-template <class Bond>
+template <class Bond, bool kSlip>
 inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& q, double dt, double half_dt) {
   constexpr bool kBonds = !std::is_same_v<Bond, NoBond>;
   double cn = 0.0, cs = 0.0;
@@ -106,7 +106,7 @@ inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& 
     // Twist about the previous normal: dt/2 (w1 + w2) . n_old (rad).
     const double hx = b.prev_normal[0][l], hy = b.prev_normal[1][l], hz = b.prev_normal[2][l];
     const double twist = half_dt * (((wix + wjx) * hx + (wiy + wjy) * hy) + (wiz + wjz) * hz);
-    const LaneForce r = lane_law<kBonds>(LaneContact{nx, ny, nz, overlap, sx, sy, sz, twist, hx, hy, hz, b.fs[0][l],
+    const LaneForce r = lane_law<kBonds, kSlip>(LaneContact{nx, ny, nz, overlap, sx, sy, sz, twist, hx, hy, hz, b.fs[0][l],
                                                      b.fs[1][l], b.fs[2][l], b.bonded[l] != 0.0},
                                          kn, ks, mu, cn, cs);
     b.slip[l] = r.slip;
@@ -138,7 +138,7 @@ template <class Normal, class Tangential, class Bond, class Out, class Sink>
   PairBatch b;
   run_in_batches(
       b, history, begin, end, [&](std::size_t c) { load_lane(b, p, c, first[c], second[c], history[c]); },
-      [&] { compute_lanes(b, bond_law, q, dt, half_dt); },
+      [&] { compute_lanes<Bond, Sink::kKeepsSlip>(b, bond_law, q, dt, half_dt); },
       [&](std::size_t k, int l) {  // steady contact: the lane's result
         keep_lane_history(history[k], b, l);
         sink.slip(b.slip[l]);

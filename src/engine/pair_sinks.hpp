@@ -21,7 +21,12 @@ inline void count_event(ContactEvent e, std::uint64_t& tension, std::uint64_t& s
 // pair order (the reference order). The logging sink keeps the non-zero ones of one
 // contiguous range of pairs in pair order; range logs replayed in range order give the same
 // sums as the serial sink (adding +0.0 to a sum that started at +0.0 changes nothing).
+//
+// `kKeepsSlip` tells the batched kernels whether the slip energy is wanted at all: when it is
+// not (the energy ledger is off, see Stepper::set_integration_sums), the lanes skip its
+// division and the sink drops it (WithoutSlip).
 struct SerialSink {
+  static constexpr bool kKeepsSlip = true;
   ForceLoopTotals& t;
   void slip(double s) { t.slip += s; }
   void broken(double e) { t.broken += e; }
@@ -29,6 +34,7 @@ struct SerialSink {
   void event(ContactEvent e) { count_event(e, t.broken_tension, t.broken_shear); }
 };
 struct LogSink {
+  static constexpr bool kKeepsSlip = true;
   std::vector<double> slips, brokens, releases;
   std::uint64_t broken_tension = 0, broken_shear = 0;
   void slip(double s) {
@@ -56,5 +62,28 @@ struct LogSink {
     t.broken_shear += broken_shear;
   }
 };
+
+// A sink that drops the slip energy and passes everything else (bond-break energies and
+// counts, which the results report) to `inner`: for steps that keep no energy ledger.
+template <class Inner>
+struct WithoutSlip {
+  static constexpr bool kKeepsSlip = false;
+  Inner& inner;
+  void slip(double) {}
+  void broken(double e) { inner.broken(e); }
+  void released(double e) { inner.released(e); }
+  void event(ContactEvent e) { inner.event(e); }
+};
+
+// Calls f(sink) when kSlip, else f(a WithoutSlip wrapper of sink).
+template <bool kSlip, class Sink, class F>
+[[gnu::always_inline]] inline void with_slip_if(Sink& sink, F&& f) {
+  if constexpr (kSlip) {
+    f(sink);
+  } else {
+    WithoutSlip<Sink> dropping{sink};
+    f(dropping);
+  }
+}
 
 }  // namespace colza::detail

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <type_traits>
 #include <variant>
 
 #ifdef _OPENMP
@@ -50,6 +51,7 @@ using detail::wall_pairs_batched;
 using detail::ForceLoopTotals;
 using detail::LogSink;
 using detail::SerialSink;
+using detail::with_slip_if;
 
 // Below this many candidate pairs per thread the force loop runs serially (threading
 // overhead would dominate; also keeps tiny unit-test systems on the reference path).
@@ -223,8 +225,9 @@ template <class Normal, class Tangential, class Out, class Sink>
   }
 }
 
-// Serial particle-pair loop: forces scattered straight onto the bodies.
-template <class Normal, class Tangential, class Bond>
+// Serial particle-pair loop: forces scattered straight onto the bodies. kSlip: sum the slip
+// energy (the energy ledger is kept).
+template <bool kSlip, class Normal, class Tangential, class Bond>
 [[gnu::flatten]] void particle_pairs_serial(const Normal& normal_law, const Tangential& tangential_law,
                                              const Bond& bond_law, bool bond_new_contacts, World& world,
                                              const PairTable& pairs, ForceLoopTotals& totals) {
@@ -232,9 +235,11 @@ template <class Normal, class Tangential, class Bond>
   p.clear_forces();
   auto& pp = world.contacts.particle_pairs;
   ScatterToBodies out{p.force.data(), p.torque.data()};
-  SerialSink sink{totals};
-  particle_pair_range(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, world.dt, pp, 0, pp.size(),
-                      out, sink);
+  SerialSink serial{totals};
+  with_slip_if<kSlip>(serial, [&](auto& sink) {
+    particle_pair_range(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, world.dt, pp, 0, pp.size(),
+                        out, sink);
+  });
 }
 
 // Threaded force loop (particle and wall pairs), partitioned as engine/force_partition.hpp
@@ -247,12 +252,12 @@ template <class Normal, class Tangential, class Bond>
 // order) and adds them. The walls' force sums, contact counts and power are summed
 // serially in wall-pair order, and the logs replayed in pair order, then wall-pair order.
 // Forces, torques, walls and ledger terms are those of the serial loops, bit for bit, at
-// any thread count.
+// any thread count. kSlip as in particle_pairs_serial.
 //
 // With `motion` (not null), each thread then advances its own particles (integrate_motion):
 // their forces are final after its phase 2, and no other thread reads them after the
 // barrier (phase 2 touches only the thread's own particles, the slots and the walls).
-template <class Normal, class Tangential, class Bond>
+template <bool kSlip, class Normal, class Tangential, class Bond>
 [[gnu::flatten]] void all_pairs_threaded(const Normal& normal_law, const Tangential& tangential_law,
                                           const Bond& bond_law, bool bond_new_contacts, World& world,
                                           const PairTable& pairs, ForceLoopTotals& totals, ForcePartition& part,
@@ -281,8 +286,10 @@ template <class Normal, class Tangential, class Bond>
     for (std::size_t r = first_range; r < T; r += stride) {
       std::fill(force + part.particle_begin[r], force + part.particle_begin[r + 1], Vec3::Zero());
       std::fill(torque + part.particle_begin[r], torque + part.particle_begin[r + 1], Vec3::Zero());
-      particle_pair_range(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, pp,
-                          part.pair_begin[r], part.pair_begin[r + 1], out, part.pair_logs[r]);
+      with_slip_if<kSlip>(part.pair_logs[r], [&](auto& sink) {
+        particle_pair_range(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, pp,
+                            part.pair_begin[r], part.pair_begin[r + 1], out, sink);
+      });
     }
     double busy = seconds_now() - started;
 #pragma omp barrier
@@ -310,9 +317,11 @@ template <class Normal, class Tangential, class Bond>
         torque[part.boundary_particles[b]] = ti;
       }
       for (std::size_t w = 0; w < n_walls; ++w)
-        wall_pair_range(normal_law, tangential_law, p, world.walls[w], pairs, dt, pw,
-                        part.wall_pair_begin[w * (T + 1) + r], part.wall_pair_begin[w * (T + 1) + r + 1], wall_out,
-                        part.wall_logs[w * T + r]);
+        with_slip_if<kSlip>(part.wall_logs[w * T + r], [&](auto& sink) {
+          wall_pair_range(normal_law, tangential_law, p, world.walls[w], pairs, dt, pw,
+                          part.wall_pair_begin[w * (T + 1) + r], part.wall_pair_begin[w * (T + 1) + r + 1], wall_out,
+                          sink);
+        });
       if (motion) integrate_motion(p, *motion, dt, part.particle_begin[r], part.particle_begin[r + 1]);
     }
     busy += seconds_now() - started;
@@ -327,22 +336,25 @@ template <class Normal, class Tangential, class Bond>
     if (part.wall_carries[c]) wall_takes(world.walls[pw.wall[c]], part.wall_force[c], totals);
 }
 
-// Sphere-wall pairs (serial, after the particle pairs, as in the reference loop).
-template <class Normal, class Tangential>
+// Sphere-wall pairs (serial, after the particle pairs, as in the reference loop). kSlip as in
+// particle_pairs_serial.
+template <bool kSlip, class Normal, class Tangential>
 [[gnu::flatten]] void wall_pairs_serial(const Normal& normal_law, const Tangential& tangential_law, World& world,
                                          const PairTable& pairs, ForceLoopTotals& totals) {
   ParticleArrays& p = world.particles;
   const double dt = world.dt;
   auto& pw = world.contacts.wall_pairs;
   clear_wall_sums(world.walls);
-  SerialSink sink{totals};
+  SerialSink serial{totals};
   // Wall pairs are sorted by wall: one segment per wall, in wall-pair order.
   for (std::size_t begin = 0, end = 0; begin < pw.size(); begin = end) {
     Wall& wall = world.walls[pw.wall[begin]];
     end = begin;
     while (end < pw.size() && pw.wall[end] == pw.wall[begin]) ++end;
     WallTakesForce out{p.force.data(), p.torque.data(), wall, totals};
-    wall_pair_range(normal_law, tangential_law, p, wall, pairs, dt, pw, begin, end, out, sink);
+    with_slip_if<kSlip>(serial, [&](auto& sink) {
+      wall_pair_range(normal_law, tangential_law, p, wall, pairs, dt, pw, begin, end, out, sink);
+    });
   }
 }
 
@@ -364,16 +376,25 @@ void Stepper::compute_forces(World& world) {
   const IntegratorSettings* motion = integrated_with_forces_ ? &physics_.integrator : nullptr;
   if (integrated_with_forces_) ++motion_with_forces_steps_;
   ForceLoopTotals totals;
-  std::visit(
-      [&](const auto& normal, const auto& tangential, const auto& bond) {
-        if (threaded) {
-          all_pairs_threaded(normal, tangential, bond, bond_new, world, pairs_, totals, partition_, motion);
-        } else {
-          particle_pairs_serial(normal, tangential, bond, bond_new, world, pairs_, totals);
-          wall_pairs_serial(normal, tangential, world, pairs_, totals);
-        }
-      },
-      physics_.model.normal, physics_.model.tangential, physics_.model.bond);
+  // The energy ledger is kept in the steps that sum the damping work (its one integrator
+  // term): only then is the slip energy computed and summed (set_integration_sums).
+  const auto force_loop = [&](auto keep_slip) {
+    constexpr bool kSlip = decltype(keep_slip)::value;
+    std::visit(
+        [&](const auto& normal, const auto& tangential, const auto& bond) {
+          if (threaded) {
+            all_pairs_threaded<kSlip>(normal, tangential, bond, bond_new, world, pairs_, totals, partition_, motion);
+          } else {
+            particle_pairs_serial<kSlip>(normal, tangential, bond, bond_new, world, pairs_, totals);
+            wall_pairs_serial<kSlip>(normal, tangential, world, pairs_, totals);
+          }
+        },
+        physics_.model.normal, physics_.model.tangential, physics_.model.bond);
+  };
+  if (sums_.damping_work)
+    force_loop(std::true_type{});
+  else
+    force_loop(std::false_type{});
   ledger_.slip_dissipated += totals.slip;
   ledger_.bond_break_lost += totals.broken;
   ledger_.shear_break_released += totals.released;

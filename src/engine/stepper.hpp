@@ -52,7 +52,10 @@ class Stepper {
   const IntegrationReport& last_integration() const { return last_integration_; }
   // The sums over particles the integration reports (integrate/integrator.hpp); all by
   // default. A stage that reads neither the unbalanced force nor the damping energy turns
-  // them off; the motion is the same.
+  // them off; the motion is the same. The damping work is the energy ledger's integrator
+  // term: with it off the ledger is not kept at all, so the force loop skips the slip energy
+  // too (one division per sliding contact and a serial sum); bond-break energies and counts
+  // are still summed (they are rare, and results report the counts).
   void set_integration_sums(IntegrationSums sums) { sums_ = sums; }
   IntegrationSums integration_sums() const { return sums_; }
   // What the caller reads or writes between begin_step and finish_step (or in a step's

@@ -103,7 +103,7 @@ template <WallShape kShape>
 // The law for every lane of one wall (the wall is body 1, the sphere body 2): contact point
 // in the middle of the overlap, c = x - (R - un/2) n, arm = c - x; velocity of the sphere
 // relative to the wall at c, v + w x arm - v_wall; twist dt/2 w . n_old.
-template <WallShape kShape>
+template <WallShape kShape, bool kSlip>
 inline void compute_wall_lanes(WallBatch& b, const Wall& wall, const PairParameters& q, double dt, double half_dt) {
   const double kn = q.kn, ks = q.ks, mu = q.friction;
   const double wvx = wall.velocity[0], wvy = wall.velocity[1], wvz = wall.velocity[2];
@@ -125,7 +125,7 @@ inline void compute_wall_lanes(WallBatch& b, const Wall& wall, const PairParamet
     const double sx = (rvx - vn * nx) * dt, sy = (rvy - vn * ny) * dt, sz = (rvz - vn * nz) * dt;
     const double hx = b.prev_normal[0][l], hy = b.prev_normal[1][l], hz = b.prev_normal[2][l];
     const double twist = half_dt * ((wx * hx + wy * hy) + wz * hz);
-    const LaneForce r = lane_law<false>(
+    const LaneForce r = lane_law<false, kSlip>(
         LaneContact{nx, ny, nz, overlap, sx, sy, sz, twist, hx, hy, hz, b.fs[0][l], b.fs[1][l], b.fs[2][l], false}, kn,
         ks, mu, 0.0, 0.0);
     b.slip[l] = r.slip;
@@ -138,11 +138,12 @@ inline void compute_wall_lanes(WallBatch& b, const Wall& wall, const PairParamet
   }
 }
 
+template <bool kSlip>
 inline void compute_wall_lanes(WallBatch& b, const Wall& wall, const PairParameters& q, double dt, double half_dt) {
   switch (wall.shape) {
-    case WallShape::kPlane: return compute_wall_lanes<WallShape::kPlane>(b, wall, q, dt, half_dt);
-    case WallShape::kCylinder: return compute_wall_lanes<WallShape::kCylinder>(b, wall, q, dt, half_dt);
-    case WallShape::kRectangle: return compute_wall_lanes<WallShape::kRectangle>(b, wall, q, dt, half_dt);
+    case WallShape::kPlane: return compute_wall_lanes<WallShape::kPlane, kSlip>(b, wall, q, dt, half_dt);
+    case WallShape::kCylinder: return compute_wall_lanes<WallShape::kCylinder, kSlip>(b, wall, q, dt, half_dt);
+    case WallShape::kRectangle: return compute_wall_lanes<WallShape::kRectangle, kSlip>(b, wall, q, dt, half_dt);
   }
 }
 
@@ -160,7 +161,7 @@ template <class Normal, class Tangential, class Out, class Sink>
   WallBatch b;
   run_in_batches(
       b, history, begin, end, [&](std::size_t c) { load_wall_lane(b, p, c, particle[c], history[c]); },
-      [&] { compute_wall_lanes(b, wall, q, dt, half_dt); },
+      [&] { compute_wall_lanes<Sink::kKeepsSlip>(b, wall, q, dt, half_dt); },
       [&](std::size_t k, int l) {  // steady contact: the lane's result
         keep_lane_history(history[k], b, l);
         sink.slip(b.slip[l]);
