@@ -11,9 +11,30 @@ bool NeighbourSearch::needs_rebuild(const ParticleArrays& particles, const std::
   const double limit2 = 0.25 * skin_ * skin_;
   for (std::size_t w = 0; w < walls.size(); ++w)
     if ((walls[w].origin - wall_origin_at_build_[w]).squaredNorm() > limit2) return true;
+  // A particle moved more than skin/2 since the build: |x - x_build|^2 > skin^2 / 4. This
+  // runs every step, so each block of particles first goes through a filter that vectorises
+  // over the flat coordinates: no coordinate moved by more than d_max, and
+  // 4 d_max^2 <= skin^2 / 4 mean that every particle of the block moved less than
+  // 2 d_max <= skin/2 (|d|^2 <= 3 d_max^2; the factor 4/3 covers the rounding). Blocks
+  // that fail the filter take the exact test, particle by particle: the decision is the
+  // exact test's (a scalar loop over all particles cost ~2 us per step on 2300 spheres).
+  static_assert(sizeof(Vec3) == 3 * sizeof(double), "positions are read as packed xyz triples");
+  constexpr std::size_t kBlock = 64;
   const std::size_t n = particles.size();
-  for (std::size_t i = 0; i < n; ++i)
-    if ((particles.position[i] - position_at_build_[i]).squaredNorm() > limit2) return true;
+  const double* x = particles.position.data()->data();
+  const double* x0 = position_at_build_.data()->data();
+  for (std::size_t begin = 0; begin < n; begin += kBlock) {
+    const std::size_t end = std::min(n, begin + kBlock);
+    double largest2 = 0.0;
+#pragma omp simd reduction(max : largest2)
+    for (std::size_t k = 3 * begin; k < 3 * end; ++k) {
+      const double d = x[k] - x0[k];
+      largest2 = std::max(largest2, d * d);
+    }
+    if (4.0 * largest2 <= limit2) continue;
+    for (std::size_t i = begin; i < end; ++i)
+      if ((particles.position[i] - position_at_build_[i]).squaredNorm() > limit2) return true;
+  }
   return false;
 }
 
