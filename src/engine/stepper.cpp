@@ -408,7 +408,7 @@ void Stepper::begin_step(World& world) {
       world.step % physics_.time_step.recompute_interval == 0)
     update_time_step(world);
   if (neighbours_.needs_rebuild(world.particles, world.walls))
-    neighbours_.rebuild(world.particles, world.walls, world.contacts);
+    neighbours_.rebuild(world.particles, world.walls, world.contacts, worker_threads());
   compute_forces(world);
 }
 

@@ -38,7 +38,7 @@ bool NeighbourSearch::needs_rebuild(const ParticleArrays& particles, const std::
   return false;
 }
 
-void NeighbourSearch::build_particle_pairs(const ParticleArrays& particles, std::vector<Index>& first,
+void NeighbourSearch::build_particle_pairs(const ParticleArrays& particles, int threads, std::vector<Index>& first,
                                            std::vector<Index>& second) {
   const std::size_t n = particles.size();
   if (n < 2) return;
@@ -58,7 +58,9 @@ void NeighbourSearch::build_particle_pairs(const ParticleArrays& particles, std:
   auto cell_coord = [&](const Vec3& x, int d) {
     return std::min(dims[d] - 1, static_cast<int>((x[d] - lo[d]) / cell));
   };
-  // Counting sort of particles into cells (order within a cell: increasing index).
+  // Counting sort of particles into cells (order within a cell: increasing index), with a
+  // copy of positions and radii in that order: the three cells x-1..x+1 of a row are
+  // consecutive cells, so a particle's 27 neighbour cells are 9 contiguous runs of memory.
   particle_cell_.resize(n);
   cell_start_.assign(n_cells + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
@@ -74,49 +76,92 @@ void NeighbourSearch::build_particle_pairs(const ParticleArrays& particles, std:
     std::vector<Index> fill(cell_start_.begin(), cell_start_.end() - 1);
     for (std::size_t i = 0; i < n; ++i) cell_particles_[fill[particle_cell_[i]]++] = static_cast<Index>(i);
   }
-  std::vector<Index> partners;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3& xi = particles.position[i];
-    const double ri = particles.radius[i];
-    const int cx = cell_coord(xi, 0), cy = cell_coord(xi, 1), cz = cell_coord(xi, 2);
-    partners.clear();
-    for (int z = std::max(0, cz - 1); z <= std::min(dims[2] - 1, cz + 1); ++z)
-      for (int y = std::max(0, cy - 1); y <= std::min(dims[1] - 1, cy + 1); ++y)
-        for (int x = std::max(0, cx - 1); x <= std::min(dims[0] - 1, cx + 1); ++x) {
-          const std::size_t c = (static_cast<std::size_t>(z) * dims[1] + y) * dims[0] + x;
-          for (Index k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+  sorted_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Index i = cell_particles_[k];
+    sorted_[k] = {particles.position[i].x(), particles.position[i].y(), particles.position[i].z(),
+                  particles.radius[i]};
+  }
+  // Partners j > i of particles [begin, end), appended in (i, j) order.
+  auto search = [&](std::size_t begin, std::size_t end, std::vector<Index>& f, std::vector<Index>& s) {
+    std::vector<Index> partners;
+    for (std::size_t i = begin; i < end; ++i) {
+      const Vec3& xi = particles.position[i];
+      const double ri = particles.radius[i];
+      const int cx = cell_coord(xi, 0), cy = cell_coord(xi, 1), cz = cell_coord(xi, 2);
+      const int x_lo = std::max(0, cx - 1), x_hi = std::min(dims[0] - 1, cx + 1);
+      const int z_lo = std::max(0, cz - 1), z_hi = std::min(dims[2] - 1, cz + 1);
+      const int y_lo = std::max(0, cy - 1), y_hi = std::min(dims[1] - 1, cy + 1);
+      std::size_t runs = 0;  // room for every particle of the 9 runs
+      for (int z = z_lo; z <= z_hi; ++z)
+        for (int y = y_lo; y <= y_hi; ++y) {
+          const std::size_t row = (static_cast<std::size_t>(z) * dims[1] + y) * dims[0];
+          runs += cell_start_[row + x_hi + 1] - cell_start_[row + x_lo];
+        }
+      partners.resize(runs);
+      std::size_t found = 0;
+      for (int z = z_lo; z <= z_hi; ++z)
+        for (int y = y_lo; y <= y_hi; ++y) {
+          const std::size_t row = (static_cast<std::size_t>(z) * dims[1] + y) * dims[0];
+          // Branch-free: every particle is written, the count advances for partners only
+          // (half of the tests fail on j > i and the rest at random: branches mispredict).
+          for (Index k = cell_start_[row + x_lo]; k < cell_start_[row + x_hi + 1]; ++k) {
             const Index j = cell_particles_[k];
-            if (j <= i) continue;
-            const double reach = ri + particles.radius[j] + skin_;
-            if ((particles.position[j] - xi).squaredNorm() < reach * reach) partners.push_back(j);
+            const SortedSphere& q = sorted_[k];
+            const double reach = ri + q.r + skin_;
+            const double dx = q.x - xi.x(), dy = q.y - xi.y(), dz = q.z - xi.z();
+            partners[found] = j;
+            found += static_cast<std::size_t>((j > i) & ((dx * dx + dy * dy) + dz * dz < reach * reach));
           }
         }
-    std::sort(partners.begin(), partners.end());
-    for (Index j : partners) {
-      first.push_back(static_cast<Index>(i));
-      second.push_back(j);
+      std::sort(partners.begin(), partners.begin() + static_cast<std::ptrdiff_t>(found));
+      for (std::size_t m = 0; m < found; ++m) {
+        f.push_back(static_cast<Index>(i));
+        s.push_back(partners[m]);
+      }
     }
+  };
+  // Threads take contiguous particle ranges; their lists are concatenated in range order,
+  // so the result does not depend on the thread count.
+  const std::size_t T = std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(threads), n / 512));
+  if (T == 1) {
+    search(0, n, first, second);
+    return;
+  }
+  range_first_.resize(T);
+  range_second_.resize(T);
+#pragma omp parallel for num_threads(static_cast<int>(T)) schedule(static, 1)
+  for (std::size_t t = 0; t < T; ++t) {
+    range_first_[t].clear();
+    range_second_[t].clear();
+    search(n * t / T, n * (t + 1) / T, range_first_[t], range_second_[t]);
+  }
+  for (std::size_t t = 0; t < T; ++t) {
+    first.insert(first.end(), range_first_[t].begin(), range_first_[t].end());
+    second.insert(second.end(), range_second_[t].begin(), range_second_[t].end());
   }
 }
 
 void NeighbourSearch::rebuild(const ParticleArrays& particles, const std::vector<Wall>& walls,
-                              ContactStore& contacts) {
-  std::vector<Index> first, second;
-  first.reserve(contacts.particle_pairs.size() + 16);
-  second.reserve(contacts.particle_pairs.size() + 16);
-  build_particle_pairs(particles, first, second);
-  contacts.adopt_particle_pairs(std::move(first), std::move(second));
+                              ContactStore& contacts, int threads) {
+  // The new lists are built in buffers kept from one rebuild to the next (no allocation
+  // once warm); the contact store merges them with the history.
+  new_first_.clear();
+  new_second_.clear();
+  build_particle_pairs(particles, threads, new_first_, new_second_);
+  contacts.adopt_particle_pairs(new_first_, new_second_);
 
-  std::vector<Index> wall_ids, wall_partners;
+  new_wall_.clear();
+  new_wall_particle_.clear();
   for (std::size_t w = 0; w < walls.size(); ++w)
     for (std::size_t i = 0; i < particles.size(); ++i) {
       const WallContactGeometry g = wall_sphere_geometry(walls[w], particles.position[i], particles.radius[i]);
       if (g.in_range && g.overlap > -skin_) {
-        wall_ids.push_back(static_cast<Index>(w));
-        wall_partners.push_back(static_cast<Index>(i));
+        new_wall_.push_back(static_cast<Index>(w));
+        new_wall_particle_.push_back(static_cast<Index>(i));
       }
     }
-  contacts.adopt_wall_pairs(std::move(wall_ids), std::move(wall_partners));
+  contacts.adopt_wall_pairs(new_wall_, new_wall_particle_);
 
   position_at_build_ = particles.position;
   wall_origin_at_build_.resize(walls.size());

@@ -17,14 +17,19 @@ class NeighbourSearch {
 
   double skin() const { return skin_; }
   bool needs_rebuild(const ParticleArrays& particles, const std::vector<Wall>& walls) const;
-  // Rebuild both candidate lists and carry contact history over.
-  void rebuild(const ParticleArrays& particles, const std::vector<Wall>& walls, ContactStore& contacts);
+  // Rebuild both candidate lists and carry contact history over. The particle pairs are
+  // searched on up to `threads` OpenMP threads (same list at any count).
+  void rebuild(const ParticleArrays& particles, const std::vector<Wall>& walls, ContactStore& contacts,
+               int threads = 1);
   void invalidate() { valid_ = false; }
   std::uint64_t rebuild_count() const { return rebuilds_; }
 
  private:
-  void build_particle_pairs(const ParticleArrays& particles, std::vector<Index>& first,
+  void build_particle_pairs(const ParticleArrays& particles, int threads, std::vector<Index>& first,
                             std::vector<Index>& second);
+  struct SortedSphere {
+    double x, y, z, r;
+  };
   double skin_;
   bool valid_ = false;
   std::uint64_t rebuilds_ = 0;
@@ -32,6 +37,9 @@ class NeighbourSearch {
   std::vector<Vec3> wall_origin_at_build_;
   // Scratch buffers of the cell grid (kept to avoid reallocation).
   std::vector<Index> cell_start_, cell_particles_, particle_cell_;
+  std::vector<SortedSphere> sorted_;                        // positions and radii in cell order
+  std::vector<std::vector<Index>> range_first_, range_second_;  // per-thread lists
+  std::vector<Index> new_first_, new_second_, new_wall_, new_wall_particle_;  // lists of the rebuild
 };
 
 }  // namespace colza
