@@ -66,6 +66,7 @@ class Stepper {
   // then already those of t + dt. The motion is the same bits either way.
   enum class BetweenHalves { kParticles, kWallsOnly };
   void set_between_halves(BetweenHalves b) { between_halves_ = b; }
+  BetweenHalves between_halves() const { return between_halves_; }
   const EnergyLedger& ledger() const { return ledger_; }
   const ContactEvents& events() const { return events_; }  // cumulative
   const NeighbourSearch& neighbours() const { return neighbours_; }

@@ -17,6 +17,10 @@ SettleResult settle(World& world, Stepper& stepper, double threshold, double max
   // The unbalanced force is read on check steps only (the loop ends on one): the other
   // steps skip its sum. The damping work is summed as the caller asked (its ledger).
   const IntegrationSums caller_sums = stepper.integration_sums();
+  // Nothing is read between the halves of a step here: on the steps without sums the
+  // threaded force loop may advance the particles itself (Stepper::set_between_halves).
+  const Stepper::BetweenHalves caller_between = stepper.between_halves();
+  stepper.set_between_halves(Stepper::BetweenHalves::kWallsOnly);
   while (true) {
     const bool check = (r.steps + 1) % check_interval == 0;
     stepper.set_integration_sums({.unbalanced = check, .damping_work = caller_sums.damping_work});
@@ -40,6 +44,7 @@ SettleResult settle(World& world, Stepper& stepper, double threshold, double max
     }
   }
   stepper.set_integration_sums(caller_sums);
+  stepper.set_between_halves(caller_between);
   progress.end_stage();
   r.simulated_time = world.time - t0;
   return r;
