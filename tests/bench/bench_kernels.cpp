@@ -133,12 +133,16 @@ void BM_OedometerForces(benchmark::State& state) {
   run_forces_only(state, w, oedometer_physics());
 }
 
+// Full steps as the oedometer's loading stage runs them: no integration sums and no energy
+// ledger (scenario/oedometer.cpp), so the motion goes inside the threaded force loop.
 void BM_OedometerStep(benchmark::State& state) {
   set_threads(state);
   World w = oedometer_packing();
   if (!has_packing(state, w)) return;
   Stepper stepper(oedometer_physics());
   stepper.prepare(w);
+  stepper.set_integration_sums({.unbalanced = false, .damping_work = false});
+  stepper.set_between_halves(Stepper::BetweenHalves::kWallsOnly);
   for (auto _ : state) stepper.step(w);
   state.counters["rebuilds"] = static_cast<double>(stepper.neighbours().rebuild_count());
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(w.particles.size()));
