@@ -5,7 +5,14 @@ Prepares the settled oedometer packing once with colza (or takes --packing), the
 loading stage of the same packing in every code with the same fixed dt and the same number
 of steps while the piston compresses at 500 mm/min, one thread each, and prints
 
-    code, particles, steps, wall seconds, particle-steps/s, ratio to colza, peak memory.
+    code, particles, steps, wall seconds, particle-steps/s, ratio to colza, peak memory
+
+(wall seconds, rate and ratio of each code's best round, then its median rate and ratio).
+
+The codes run in --repeat interleaved rounds (default 3) and each code's best round and
+median are reported, with the ratios round by round: this class of machine (2 shared
+cores) slows down by up to 2x for minutes at a time, and the longest run (YADE) would
+otherwise catch more of it than the others.
 
 Wall seconds are the time of the stepping loop only (colza: the loading stage clock in
 summary.json; LAMMPS: "Loop time"; YADE: O.run(N, True) timed inside the script); peak
@@ -28,6 +35,7 @@ import math
 import os
 import re
 import shutil
+import statistics
 import subprocess
 import sys
 import time
@@ -225,6 +233,7 @@ def main():
     ap.add_argument("--dt", type=float, default=1e-5, help="fixed time step for every code (s)")
     ap.add_argument("--steps", type=int, default=20000)
     ap.add_argument("--threads", type=int, default=1, help="colza threads (YADE and LAMMPS run on one)")
+    ap.add_argument("--repeat", type=int, default=3, help="interleaved rounds (best and median are reported)")
     ap.add_argument("--skip-yade", action="store_true")
     ap.add_argument("--skip-lammps", action="store_true")
     a = ap.parse_args()
@@ -233,31 +242,50 @@ def main():
     packing = os.path.abspath(a.packing) if a.packing else prepare_packing(colza, a.work)
     spheres = read_packing(packing)
 
-    rows = [run_colza(colza, packing, a.dt, a.steps, a.work, a.threads)]
-    steps = rows[0]["steps"]
-    if not a.skip_lammps:
-        if ensure_installed("lmp", "lammps"):
-            rows.append(run_lammps(spheres, a.dt, steps, a.work))
-        else:
-            print("lmp not found and could not be installed: LAMMPS skipped", file=sys.stderr)
-    if not a.skip_yade:
-        if ensure_installed("yade", "yade"):
-            rows.append(run_yade(packing, a.dt, steps, a.work))
-        else:
-            print("yade not found and could not be installed: YADE skipped", file=sys.stderr)
+    # Rounds interleave the codes, so a slow phase of this shared machine hits all of them
+    # alike; each code's best round (least disturbed) and median are reported.
+    runs = {}  # code -> list of rows, one per round
+    steps = None
+    for k in range(a.repeat):
+        row = run_colza(colza, packing, a.dt, a.steps, a.work, a.threads)
+        runs.setdefault("colza", []).append(row)
+        steps = row["steps"]
+        if not a.skip_lammps:
+            if ensure_installed("lmp", "lammps"):
+                runs.setdefault("LAMMPS", []).append(run_lammps(spheres, a.dt, steps, a.work))
+            else:
+                print("lmp not found and could not be installed: LAMMPS skipped", file=sys.stderr)
+                a.skip_lammps = True
+        if not a.skip_yade:
+            if ensure_installed("yade", "yade"):
+                runs.setdefault("YADE", []).append(run_yade(packing, a.dt, steps, a.work))
+            else:
+                print("yade not found and could not be installed: YADE skipped", file=sys.stderr)
+                a.skip_yade = True
+        print(f"round {k + 1}/{a.repeat}: " + ", ".join(f"{c} {r[-1]['seconds']:.2f} s" for c, r in runs.items()),
+              file=sys.stderr, flush=True)
 
-    colza_rate = rows[0]["particles"] * rows[0]["steps"] / rows[0]["seconds"]
+    def rate(r):
+        return r["particles"] * r["steps"] / r["seconds"]
+
+    best = {c: max(rs, key=rate) for c, rs in runs.items()}
+    median = {c: statistics.median(rate(r) for r in rs) for c, rs in runs.items()}
     print(f"\noedometer loading from {packing}: dt = {a.dt:g} s, {steps} steps, one thread "
-          f"(colza --threads {a.threads})\n")
-    head = f"{'code':<8} {'particles':>9} {'steps':>7} {'wall s':>9} {'Mp-steps/s':>11} {'vs colza':>9} {'peak MB':>8}"
+          f"(colza --threads {a.threads}), {a.repeat} interleaved round(s)\n")
+    head = (f"{'code':<8} {'particles':>9} {'steps':>7} {'best s':>8} {'Mp-steps/s':>11} {'vs colza':>9} "
+            f"{'median Mp/s':>12} {'vs colza':>9} {'peak MB':>8}")
     print(head)
     print("-" * len(head))
-    for r in rows:
-        rate = r["particles"] * r["steps"] / r["seconds"]
-        rss = f"{r['rss'] / 1024:.1f}" if r["rss"] else "?"
-        print(f"{r['code']:<8} {r['particles']:>9} {r['steps']:>7} {r['seconds']:>9.2f} {rate / 1e6:>11.2f} "
-              f"{rate / colza_rate:>9.3f} {rss:>8}")
-
+    for c, r in best.items():
+        rss = max((x["rss"] for x in runs[c] if x["rss"]), default=None)
+        rss_text = f"{rss / 1024:.1f}" if rss else "?"
+        print(f"{c:<8} {r['particles']:>9} {r['steps']:>7} {r['seconds']:>8.2f} {rate(r) / 1e6:>11.2f} "
+              f"{rate(r) / rate(best['colza']):>9.3f} {median[c] / 1e6:>12.2f} {median[c] / median['colza']:>9.3f} "
+              f"{rss_text:>8}")
+    if a.repeat > 1:
+        print("\ncolza's speed over each code, round by round: " + "; ".join(
+            f"{c} " + " ".join(f"{rate(runs['colza'][k]) / rate(runs[c][k]):.2f}x" for k in range(a.repeat))
+            for c in runs if c != "colza"))
 
 if __name__ == "__main__":
     main()
