@@ -77,6 +77,20 @@ TEST(NeighbourSearch, CandidatesAreExactlyThePairsWithinReachInPairOrder) {
   }
 }
 
+// The search splits particles in ranges over threads (from 1024 particles on, 512 per
+// thread at least) and concatenates the ranges' lists: the same list at any thread count.
+TEST(NeighbourSearch, ThreadsGiveTheSameList) {
+  ParticleArrays p = cloud(3000, 6);
+  ContactStore one;
+  NeighbourSearch(kSkin).rebuild(p, floor_and_envelope(), one, 1);
+  EXPECT_EQ(listed_pairs(one), brute_force_pairs(p));
+  for (int threads : {2, 3, 5}) {
+    ContactStore many;
+    NeighbourSearch(kSkin).rebuild(p, floor_and_envelope(), many, threads);
+    EXPECT_EQ(listed_pairs(many), listed_pairs(one)) << threads << " threads";
+  }
+}
+
 TEST(NeighbourSearch, WallCandidatesAreWithinSkinInWallThenParticleOrder) {
   ParticleArrays p = cloud(900, 4);
   const std::vector<Wall> walls = floor_and_envelope();
