@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <numeric>
-#include <utility>
 
 #include "core/particles.hpp"
 
@@ -10,16 +9,13 @@ namespace colza {
 
 namespace {
 
-// Merge old (a,b)-sorted pairs with history into new sorted pairs, written to out_* (their
-// capacity is reused). Pairs only in the old list are dropped unless bonded, in which case
-// they are inserted in order.
-void merge_history(const std::vector<Index>& new_a, const std::vector<Index>& new_b,
+// Merge old (a,b)-sorted pairs with history into new sorted pairs. Pairs only in the old
+// list are dropped unless bonded, in which case they are inserted in order.
+void merge_history(std::vector<Index>& new_a, std::vector<Index>& new_b,
                    const std::vector<Index>& old_a, const std::vector<Index>& old_b,
-                   const std::vector<ContactHistory>& old_h, std::vector<Index>& out_a, std::vector<Index>& out_b,
-                   std::vector<ContactHistory>& out_h) {
-  out_a.clear();
-  out_b.clear();
-  out_h.clear();
+                   const std::vector<ContactHistory>& old_h, std::vector<ContactHistory>& new_h) {
+  std::vector<Index> out_a, out_b;
+  std::vector<ContactHistory> out_h;
   out_a.reserve(new_a.size());
   out_b.reserve(new_a.size());
   out_h.reserve(new_a.size());
@@ -44,23 +40,28 @@ void merge_history(const std::vector<Index>& new_a, const std::vector<Index>& ne
       ++j;
     }
   }
+  new_a.swap(out_a);
+  new_b.swap(out_b);
+  new_h.swap(out_h);
 }
 
 }  // namespace
 
-void ContactStore::adopt_particle_pairs(const std::vector<Index>& first, const std::vector<Index>& second) {
-  ParticlePairList& out = spare_particle_pairs_;
-  merge_history(first, second, particle_pairs.first, particle_pairs.second, particle_pairs.history, out.first,
-                out.second, out.history);
-  std::swap(particle_pairs, out);  // the old lists become the next merge's buffers
+void ContactStore::adopt_particle_pairs(std::vector<Index> first, std::vector<Index> second) {
+  std::vector<ContactHistory> history;
+  merge_history(first, second, particle_pairs.first, particle_pairs.second, particle_pairs.history, history);
+  particle_pairs.first.swap(first);
+  particle_pairs.second.swap(second);
+  particle_pairs.history.swap(history);
   ++revision_;
 }
 
-void ContactStore::adopt_wall_pairs(const std::vector<Index>& wall, const std::vector<Index>& particle) {
-  WallPairList& out = spare_wall_pairs_;
-  merge_history(wall, particle, wall_pairs.wall, wall_pairs.particle, wall_pairs.history, out.wall, out.particle,
-                out.history);
-  std::swap(wall_pairs, out);
+void ContactStore::adopt_wall_pairs(std::vector<Index> wall, std::vector<Index> particle) {
+  std::vector<ContactHistory> history;
+  merge_history(wall, particle, wall_pairs.wall, wall_pairs.particle, wall_pairs.history, history);
+  wall_pairs.wall.swap(wall);
+  wall_pairs.particle.swap(particle);
+  wall_pairs.history.swap(history);
   ++revision_;
 }
 

@@ -28,9 +28,8 @@ class ContactStore {
 
   // Replace the candidate lists, keeping the history of pairs present in both old and new
   // lists. A bonded pair missing from the new list is kept (a bond holds beyond the skin).
-  // The merge writes into buffers kept from the previous lists (no allocation once warm).
-  void adopt_particle_pairs(const std::vector<Index>& first, const std::vector<Index>& second);
-  void adopt_wall_pairs(const std::vector<Index>& wall, const std::vector<Index>& particle);
+  void adopt_particle_pairs(std::vector<Index> first, std::vector<Index> second);
+  void adopt_wall_pairs(std::vector<Index> wall, std::vector<Index> particle);
 
   // Rename particles after removal/reordering (old_to_new[i] == kRemoved drops the pair).
   void renumber_particles(const std::vector<Index>& old_to_new);
@@ -45,9 +44,6 @@ class ContactStore {
 
  private:
   std::uint64_t revision_ = 0;
-  // The lists before the last adopt_*, kept as the next merge's output buffers.
-  ParticlePairList spare_particle_pairs_;
-  WallPairList spare_wall_pairs_;
 };
 
 }  // namespace colza

@@ -106,9 +106,9 @@ inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& 
     // Twist about the previous normal: dt/2 (w1 + w2) . n_old (rad).
     const double hx = b.prev_normal[0][l], hy = b.prev_normal[1][l], hz = b.prev_normal[2][l];
     const double twist = half_dt * (((wix + wjx) * hx + (wiy + wjy) * hy) + (wiz + wjz) * hz);
-    const LaneForce r = lane_law<kBonds, kSlip>(LaneContact{nx, ny, nz, overlap, sx, sy, sz, twist, hx, hy, hz, b.fs[0][l],
-                                                     b.fs[1][l], b.fs[2][l], b.bonded[l] != 0.0},
-                                         kn, ks, mu, cn, cs);
+    const LaneForce r = lane_law<kBonds, kSlip>(LaneContact{nx, ny, nz, overlap, sx, sy, sz, twist, hx, hy, hz,
+                                                            b.fs[0][l], b.fs[1][l], b.fs[2][l], b.bonded[l] != 0.0},
+                                                kn, ks, mu, cn, cs);
     b.slip[l] = r.slip;
     b.fallback[l] = r.falls_back ? 1.0 : 0.0;
     // Torques arm x F of the force on body 2.

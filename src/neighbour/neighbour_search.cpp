@@ -144,24 +144,22 @@ void NeighbourSearch::build_particle_pairs(const ParticleArrays& particles, int 
 
 void NeighbourSearch::rebuild(const ParticleArrays& particles, const std::vector<Wall>& walls,
                               ContactStore& contacts, int threads) {
-  // The new lists are built in buffers kept from one rebuild to the next (no allocation
-  // once warm); the contact store merges them with the history.
-  new_first_.clear();
-  new_second_.clear();
-  build_particle_pairs(particles, threads, new_first_, new_second_);
-  contacts.adopt_particle_pairs(new_first_, new_second_);
+  std::vector<Index> first, second;
+  first.reserve(contacts.particle_pairs.size() + 16);
+  second.reserve(contacts.particle_pairs.size() + 16);
+  build_particle_pairs(particles, threads, first, second);
+  contacts.adopt_particle_pairs(std::move(first), std::move(second));
 
-  new_wall_.clear();
-  new_wall_particle_.clear();
+  std::vector<Index> wall_ids, wall_partners;
   for (std::size_t w = 0; w < walls.size(); ++w)
     for (std::size_t i = 0; i < particles.size(); ++i) {
       const WallContactGeometry g = wall_sphere_geometry(walls[w], particles.position[i], particles.radius[i]);
       if (g.in_range && g.overlap > -skin_) {
-        new_wall_.push_back(static_cast<Index>(w));
-        new_wall_particle_.push_back(static_cast<Index>(i));
+        wall_ids.push_back(static_cast<Index>(w));
+        wall_partners.push_back(static_cast<Index>(i));
       }
     }
-  contacts.adopt_wall_pairs(new_wall_, new_wall_particle_);
+  contacts.adopt_wall_pairs(std::move(wall_ids), std::move(wall_partners));
 
   position_at_build_ = particles.position;
   wall_origin_at_build_.resize(walls.size());

@@ -39,7 +39,6 @@ class NeighbourSearch {
   std::vector<Index> cell_start_, cell_particles_, particle_cell_;
   std::vector<SortedSphere> sorted_;                        // positions and radii in cell order
   std::vector<std::vector<Index>> range_first_, range_second_;  // per-thread lists
-  std::vector<Index> new_first_, new_second_, new_wall_, new_wall_particle_;  // lists of the rebuild
 };
 
 }  // namespace colza

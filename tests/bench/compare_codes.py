@@ -242,6 +242,17 @@ def main():
     packing = os.path.abspath(a.packing) if a.packing else prepare_packing(colza, a.work)
     spheres = read_packing(packing)
 
+    # The other codes, installed from Debian on demand (never needed by colza itself).
+    others = []  # (code, runner taking the step count)
+    for code, binary, package, skip, runner in (
+            ("LAMMPS", "lmp", "lammps", a.skip_lammps, lambda n: run_lammps(spheres, a.dt, n, a.work)),
+            ("YADE", "yade", "yade", a.skip_yade, lambda n: run_yade(packing, a.dt, n, a.work))):
+        if skip:
+            continue
+        if ensure_installed(binary, package):
+            others.append((code, runner))
+        else:
+            print(f"{binary} not found and could not be installed: {code} skipped", file=sys.stderr)
     # Rounds interleave the codes, so a slow phase of this shared machine hits all of them
     # alike; each code's best round (least disturbed) and median are reported.
     runs = {}  # code -> list of rows, one per round
@@ -250,18 +261,8 @@ def main():
         row = run_colza(colza, packing, a.dt, a.steps, a.work, a.threads)
         runs.setdefault("colza", []).append(row)
         steps = row["steps"]
-        if not a.skip_lammps:
-            if ensure_installed("lmp", "lammps"):
-                runs.setdefault("LAMMPS", []).append(run_lammps(spheres, a.dt, steps, a.work))
-            else:
-                print("lmp not found and could not be installed: LAMMPS skipped", file=sys.stderr)
-                a.skip_lammps = True
-        if not a.skip_yade:
-            if ensure_installed("yade", "yade"):
-                runs.setdefault("YADE", []).append(run_yade(packing, a.dt, steps, a.work))
-            else:
-                print("yade not found and could not be installed: YADE skipped", file=sys.stderr)
-                a.skip_yade = True
+        for code, runner in others:
+            runs.setdefault(code, []).append(runner(steps))
         print(f"round {k + 1}/{a.repeat}: " + ", ".join(f"{c} {r[-1]['seconds']:.2f} s" for c, r in runs.items()),
               file=sys.stderr, flush=True)
 
