@@ -43,12 +43,21 @@ void add_timing(nlohmann::json& summary, const std::vector<StageTiming>& stages)
   summary["stages"] = stages_json(stages);
 }
 
+nlohmann::json without_timing(const nlohmann::json& summary) {
+  nlohmann::json s = summary;
+  for (const char* key : kTimingKeys) s.erase(key);
+  if (s.contains("stages"))
+    for (auto& stage : s["stages"])
+      for (const char* key : kTimingKeys) stage.erase(key);
+  return s;
+}
+
 void write_result_h5(const std::string& file, const std::string& scenario, const RunConfig& c,
                      const nlohmann::json& summary, const std::string& table_group, const Table& table,
                      std::initializer_list<NamedState> states) {
   Hdf5Writer h5(file);
   write_provenance(h5, scenario, c.seed, c.resolved_toml);
-  h5.attribute("summary_json", summary.dump());
+  h5.attribute("summary_json", without_timing(summary).dump());
   h5.write_table(table_group, table);
   for (const NamedState& st : states) h5.write_particles(st.group, *st.particles);
   h5.close();

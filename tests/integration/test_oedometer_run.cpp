@@ -97,6 +97,9 @@ TEST_F(SmallOedometer, SameSeedSameResultBitForBit) {
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   EXPECT_EQ(read_file(out_ / "curve.csv"), read_file(again / "curve.csv"));
   EXPECT_EQ(read_file(out_ / "packing.txt"), read_file(again / "packing.txt"));
+  // result.h5 too, byte for byte: it embeds the summary without its timings and its
+  // objects carry no creation times (summary.json keeps the timings, so it differs).
+  EXPECT_EQ(read_file(out_ / "result.h5"), read_file(again / "result.h5"));
 }
 
 TEST_F(SmallOedometer, OtherSeedOtherPacking) {
