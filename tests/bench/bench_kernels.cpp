@@ -79,9 +79,11 @@ void set_threads(benchmark::State& state) {
 
 // Forces only: Stepper::begin_step (time-step update every 100 steps, rebuild check, force
 // loop). Particles do not move, so the lists stay valid and contacts stay touching.
-void run_forces_only(benchmark::State& state, World& w, const PhysicsSettings& settings) {
+void run_forces_only(benchmark::State& state, World& w, const PhysicsSettings& settings,
+                     IntegrationSums sums = IntegrationSums{}) {
   Stepper stepper(settings);
   stepper.prepare(w);
+  stepper.set_integration_sums(sums);
   for (auto _ : state) {
     stepper.begin_step(w);
     ++w.step;
@@ -130,7 +132,9 @@ void BM_OedometerForces(benchmark::State& state) {
   set_threads(state);
   World w = oedometer_packing();
   if (!has_packing(state, w)) return;
-  run_forces_only(state, w, oedometer_physics());
+  // As the loading runs them: no integration sums, so no energy ledger and no slip energy
+  // (the lanes' form without its division).
+  run_forces_only(state, w, oedometer_physics(), {.unbalanced = false, .damping_work = false});
 }
 
 // Full steps as the oedometer's loading stage runs them: no integration sums and no energy
