@@ -2,9 +2,10 @@
 //   /                 attributes: schema_version, colza_version, git_revision, scenario,
 //                     seed, config_toml (the configuration as used) and summary_json (the
 //                     summary without timings)
-// Objects carry no creation times, so equal results give equal files, byte for byte.
 //   /curve            one 1-D dataset per recorded column (SI units, see curve.csv)
 //   /particles/<tag>  position (N x 3), velocity (N x 3), angular_velocity (N x 3), radius (N)
+// Groups and datasets carry no creation or modification times, so equal results give equal
+// files, byte for byte.
 #pragma once
 #include <memory>
 #include <string>
