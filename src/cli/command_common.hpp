@@ -16,18 +16,14 @@ double total_wall_seconds(const std::vector<StageTiming>& stages);
 double overall_rate(const std::vector<StageTiming>& stages);  // particle-steps per second
 // Sets wall_seconds, cpu_seconds, particle_steps_per_second and stages of a summary.
 void add_timing(nlohmann::json& summary, const std::vector<StageTiming>& stages);
-// The keys add_timing sets that measure the machine, not the simulation (also per stage).
-inline constexpr const char* kTimingKeys[] = {"wall_seconds", "cpu_seconds", "particle_steps_per_second"};
-// The summary without them: what result.h5 embeds, so that the same config and seed at the
-// same thread count give the same result.h5, byte for byte (summary.json keeps the timings).
-nlohmann::json without_timing(const nlohmann::json& summary);
 
 struct NamedState {
   const char* group;  // e.g. "particles/final"
   const ParticleArrays* particles;
 };
-// result.h5: provenance, the summary without timings as an attribute, the recorded table and
-// particle states.
+// result.h5: provenance, the summary without the timings add_timing set (so that the same
+// config and seed at the same thread count give the same result.h5, byte for byte;
+// summary.json keeps them) as an attribute, the recorded table and particle states.
 void write_result_h5(const std::string& file, const std::string& scenario, const RunConfig& c,
                      const nlohmann::json& summary, const std::string& table_group, const Table& table,
                      std::initializer_list<NamedState> states);
