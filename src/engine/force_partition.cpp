@@ -4,6 +4,40 @@
 
 namespace colza {
 
+namespace {
+
+// Moves the cuts (T + 1 fractions of some list) towards equal busy time of the T ranges.
+// Busy time is taken as a piecewise-linear function of the fraction (uniform cost within
+// each old range); the new cut t sits where it reaches total * t / T. Half a step towards it
+// damps timing noise. No measured time: the cuts stay.
+void rebalance(std::vector<double>& cut_fraction, const std::vector<double>& busy_seconds) {
+  const std::size_t T = cut_fraction.size() - 1;
+  double total = 0.0;
+  for (std::size_t t = 0; t < T; ++t) total += busy_seconds[t];
+  if (!(total > 0.0)) return;
+  std::vector<double> target(T + 1, 0.0);
+  target[T] = 1.0;
+  std::size_t r = 0;
+  double below = 0.0;  // busy time of ranges before r
+  for (std::size_t t = 1; t < T; ++t) {
+    const double want = total * static_cast<double>(t) / static_cast<double>(T);
+    while (r + 1 < T && below + busy_seconds[r] < want) below += busy_seconds[r++];
+    const double width = cut_fraction[r + 1] - cut_fraction[r];
+    const double share = busy_seconds[r] > 0.0 ? std::clamp((want - below) / busy_seconds[r], 0.0, 1.0) : 0.5;
+    target[t] = cut_fraction[r] + share * width;
+  }
+  for (std::size_t t = 1; t < T; ++t)
+    cut_fraction[t] = std::clamp(0.5 * (cut_fraction[t] + target[t]), cut_fraction[t - 1], 1.0);
+}
+
+std::vector<double> equal_cuts(std::size_t T) {
+  std::vector<double> cuts(T + 1);
+  for (std::size_t t = 0; t <= T; ++t) cuts[t] = static_cast<double>(t) / static_cast<double>(T);
+  return cuts;
+}
+
+}  // namespace
+
 bool ForcePartition::matches(const ContactStore& contacts, std::size_t n_particles, std::size_t n_walls,
                              int thread_count) const {
   return revision_ == contacts.revision() && first_data_ == contacts.particle_pairs.first.data() &&
@@ -15,14 +49,16 @@ void ForcePartition::build(const ContactStore& contacts, std::size_t n, std::siz
   const auto& pp = contacts.particle_pairs;
   const auto& pw = contacts.wall_pairs;
   const std::size_t n_pairs = pp.size(), T = static_cast<std::size_t>(thread_count);
-  if (threads == thread_count && cut_fraction_.size() == T + 1 && n_particles_ == n) {
-    rebalance();
+  if (threads == thread_count && pair_cut_fraction_.size() == T + 1 && n_particles_ == n) {
+    rebalance(pair_cut_fraction_, pair_busy_seconds);
+    rebalance(finish_cut_fraction_, finish_busy_seconds);
   } else {
-    cut_fraction_.resize(T + 1);
-    for (std::size_t t = 0; t <= T; ++t) cut_fraction_[t] = static_cast<double>(t) / static_cast<double>(T);
+    pair_cut_fraction_ = equal_cuts(T);
+    finish_cut_fraction_ = equal_cuts(T);
   }
   threads = thread_count;
-  busy_seconds.assign(T, 0.0);
+  pair_busy_seconds.assign(T, 0.0);
+  finish_busy_seconds.assign(T, 0.0);
   steps_since_build = 0;
 
   // Ranges: cut the pair list at the cut fractions, each cut moved back to the first pair
@@ -33,7 +69,7 @@ void ForcePartition::build(const ContactStore& contacts, std::size_t n, std::siz
   pair_begin[T] = n_pairs;
   for (std::size_t t = 1; t < T; ++t) {
     const std::size_t cut =
-        std::min(n_pairs, static_cast<std::size_t>(cut_fraction_[t] * static_cast<double>(n_pairs)));
+        std::min(n_pairs, static_cast<std::size_t>(pair_cut_fraction_[t] * static_cast<double>(n_pairs)));
     std::size_t a = cut < n_pairs ? pp.first[cut] : n;
     a = std::max(a, particle_begin[t - 1]);
     particle_begin[t] = a;
@@ -63,10 +99,16 @@ void ForcePartition::build(const ContactStore& contacts, std::size_t n, std::siz
       boundary_index[q] = static_cast<Index>(boundary_particles.size());
       boundary_particles.push_back(static_cast<Index>(q));
     }
+  // Finishing ranges: cuts at fractions of the particles.
+  finish_begin.assign(T + 1, 0);
+  finish_begin[T] = n;
+  for (std::size_t t = 1; t < T; ++t)
+    finish_begin[t] = std::clamp(static_cast<std::size_t>(finish_cut_fraction_[t] * static_cast<double>(n)),
+                                 finish_begin[t - 1], n);
   boundary_begin.assign(T + 1, 0);
   for (std::size_t t = 0; t <= T; ++t)
     boundary_begin[t] = static_cast<std::size_t>(
-        std::lower_bound(boundary_particles.begin(), boundary_particles.end(), static_cast<Index>(particle_begin[t])) -
+        std::lower_bound(boundary_particles.begin(), boundary_particles.end(), static_cast<Index>(finish_begin[t])) -
         boundary_particles.begin());
 
   // Gather lists of the boundary particles, in pair order.
@@ -96,7 +138,7 @@ void ForcePartition::build(const ContactStore& contacts, std::size_t n, std::siz
     const auto p_end = pw.particle.begin() + (seg_end - pw.wall.begin());
     for (std::size_t t = 0; t <= T; ++t)
       wall_pair_begin[w * (T + 1) + t] = static_cast<std::size_t>(
-          std::lower_bound(p_begin, p_end, static_cast<Index>(particle_begin[t])) - pw.particle.begin());
+          std::lower_bound(p_begin, p_end, static_cast<Index>(finish_begin[t])) - pw.particle.begin());
   }
   wall_force.resize(pw.size());
   wall_carries.resize(pw.size());
@@ -108,29 +150,6 @@ void ForcePartition::build(const ContactStore& contacts, std::size_t n, std::siz
   n_pairs_ = n_pairs;
   n_particles_ = n;
   n_walls_ = n_walls;
-}
-
-void ForcePartition::rebalance() {
-  const std::size_t T = cut_fraction_.size() - 1;
-  double total = 0.0;
-  for (std::size_t t = 0; t < T; ++t) total += busy_seconds[t];
-  if (!(total > 0.0)) return;
-  // Busy time as a piecewise-linear function of the pair-list fraction (uniform cost within
-  // each old range); the new cut t sits where it reaches total * t / T. Half a step towards
-  // it damps timing noise.
-  std::vector<double> target(T + 1, 0.0);
-  target[T] = 1.0;
-  std::size_t r = 0;
-  double below = 0.0;  // busy time of ranges before r
-  for (std::size_t t = 1; t < T; ++t) {
-    const double want = total * static_cast<double>(t) / static_cast<double>(T);
-    while (r + 1 < T && below + busy_seconds[r] < want) below += busy_seconds[r++];
-    const double width = cut_fraction_[r + 1] - cut_fraction_[r];
-    const double share = busy_seconds[r] > 0.0 ? std::clamp((want - below) / busy_seconds[r], 0.0, 1.0) : 0.5;
-    target[t] = cut_fraction_[r] + share * width;
-  }
-  for (std::size_t t = 1; t < T; ++t)
-    cut_fraction_[t] = std::clamp(0.5 * (cut_fraction_[t] + target[t]), cut_fraction_[t - 1], 1.0);
 }
 
 }  // namespace colza

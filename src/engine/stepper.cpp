@@ -244,19 +244,21 @@ template <bool kSlip, class Normal, class Tangential, class Bond>
 
 // Threaded force loop (particle and wall pairs), partitioned as engine/force_partition.hpp
 // explains. Phase 1: each thread computes the pairs of its particle range, scattering to
-// inner bodies at once and storing pairs with a boundary body in slots. Barrier. Phase 2:
-// each thread sums its boundary particles from the slots in pair order, starting from zero
+// inner bodies at once and storing pairs with a boundary body in slots. Barrier. Phase 2,
+// over the finishing ranges (a cut of its own, balanced on phase 2's time): each thread sums
+// the boundary particles of its range from the slots in pair order, starting from zero
 // (the serial loop's sequence of additions: x - f == x + (-f) in IEEE arithmetic, and a
 // pair without force adds +-0 to a sum started at +0, which changes nothing), then computes
-// the wall pairs of its particles wall by wall (each particle: increasing wall = wall-pair
-// order) and adds them. The walls' force sums, contact counts and power are summed
+// the wall pairs of its range's particles wall by wall (each particle: increasing wall =
+// wall-pair order) and adds them. The walls' force sums, contact counts and power are summed
 // serially in wall-pair order, and the logs replayed in pair order, then wall-pair order.
 // Forces, torques, walls and ledger terms are those of the serial loops, bit for bit, at
 // any thread count. kSlip as in particle_pairs_serial.
 //
-// With `motion` (not null), each thread then advances its own particles (integrate_motion):
-// their forces are final after its phase 2, and no other thread reads them after the
-// barrier (phase 2 touches only the thread's own particles, the slots and the walls).
+// With `motion` (not null), each thread then advances the particles of its finishing range
+// (integrate_motion): their forces are final after its phase 2, and no other thread reads
+// them after the barrier (phase 2 touches only its range's particles, the slots and the
+// walls).
 template <bool kSlip, class Normal, class Tangential, class Bond>
 [[gnu::flatten]] void all_pairs_threaded(const Normal& normal_law, const Tangential& tangential_law,
                                           const Bond& bond_law, bool bond_new_contacts, World& world,
@@ -291,7 +293,7 @@ template <bool kSlip, class Normal, class Tangential, class Bond>
                             part.pair_begin[r], part.pair_begin[r + 1], out, sink);
       });
     }
-    double busy = seconds_now() - started;
+    const double pair_busy = seconds_now() - started;
 #pragma omp barrier
     started = seconds_now();
     const Index* start = part.gather_start.data();
@@ -300,7 +302,7 @@ template <bool kSlip, class Normal, class Tangential, class Bond>
     const Vec3* slot_torque_1 = part.slot_torque_1.data();
     const Vec3* slot_torque_2 = part.slot_torque_2.data();
     StoreWallForce wall_out{force, torque, part.wall_force.data(), part.wall_carries.data()};
-    for (std::size_t r = first_range; r < T; r += stride) {
+    for (std::size_t r = first_range; r < T; r += stride) {  // finishing ranges
       for (std::size_t b = part.boundary_begin[r]; b < part.boundary_begin[r + 1]; ++b) {
         Vec3 fi = Vec3::Zero(), ti = Vec3::Zero();
         for (Index k = start[b]; k < start[b + 1]; ++k) {
@@ -322,12 +324,15 @@ template <bool kSlip, class Normal, class Tangential, class Bond>
                           part.wall_pair_begin[w * (T + 1) + r], part.wall_pair_begin[w * (T + 1) + r + 1], wall_out,
                           sink);
         });
-      if (motion) integrate_motion(p, *motion, dt, part.particle_begin[r], part.particle_begin[r + 1]);
+      if (motion) integrate_motion(p, *motion, dt, part.finish_begin[r], part.finish_begin[r + 1]);
     }
-    busy += seconds_now() - started;
-    // Measured cost of this thread's ranges, for the next partition (balance only).
-    const std::size_t my_ranges = (T - first_range + stride - 1) / stride;
-    for (std::size_t r = first_range; r < T; r += stride) part.busy_seconds[r] += busy / static_cast<double>(my_ranges);
+    const double finish_busy = seconds_now() - started;
+    // Measured cost of this thread's ranges in each phase, for the next partition (balance only).
+    const double my_ranges = static_cast<double>((T - first_range + stride - 1) / stride);
+    for (std::size_t r = first_range; r < T; r += stride) {
+      part.pair_busy_seconds[r] += pair_busy / my_ranges;
+      part.finish_busy_seconds[r] += finish_busy / my_ranges;
+    }
   }
   for (const LogSink& s : part.pair_logs) s.replay_into(totals);  // range order = pair order
   for (const LogSink& s : part.wall_logs) s.replay_into(totals);  // [w * T + t]: wall-pair order

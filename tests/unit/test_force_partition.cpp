@@ -45,11 +45,13 @@ ContactStore random_store(unsigned seed) {
   return store;
 }
 
-std::size_t range_of(const ForcePartition& part, std::size_t q) {
+std::size_t range_in(const std::vector<std::size_t>& begin, std::size_t q) {
   std::size_t r = 0;
-  while (part.particle_begin[r + 1] <= q) ++r;
+  while (begin[r + 1] <= q) ++r;
   return r;
 }
+std::size_t range_of(const ForcePartition& part, std::size_t q) { return range_in(part.particle_begin, q); }
+std::size_t finishing_range_of(const ForcePartition& part, std::size_t q) { return range_in(part.finish_begin, q); }
 
 void check_invariants(const ContactStore& store, const ForcePartition& part, int threads) {
   const auto& pp = store.particle_pairs;
@@ -63,6 +65,10 @@ void check_invariants(const ContactStore& store, const ForcePartition& part, int
     // pair range t = the pairs whose first body is in particle range t
     for (std::size_t c = part.pair_begin[t]; c < part.pair_begin[t + 1]; ++c) EXPECT_EQ(range_of(part, pp.first[c]), t);
   }
+  ASSERT_EQ(part.finish_begin.size(), T + 1);
+  EXPECT_EQ(part.finish_begin.front(), 0u);
+  EXPECT_EQ(part.finish_begin.back(), kParticles);
+  for (std::size_t t = 0; t < T; ++t) EXPECT_LE(part.finish_begin[t], part.finish_begin[t + 1]);
   EXPECT_EQ(part.pair_begin.front(), 0u);
   EXPECT_EQ(part.pair_begin.back(), pp.size());
   // boundary <=> a partner in another range; every pair of a boundary particle has a slot
@@ -89,20 +95,21 @@ void check_invariants(const ContactStore& store, const ForcePartition& part, int
     const std::vector<Index> got(part.gather_entries.begin() + part.gather_start[b],
                                  part.gather_entries.begin() + part.gather_start[b + 1]);
     EXPECT_EQ(got, expected) << "particle " << q;
-    const std::size_t r = range_of(part, q);
+    const std::size_t r = finishing_range_of(part, q);
     EXPECT_GE(b, part.boundary_begin[r]);
     EXPECT_LT(b, part.boundary_begin[r + 1]);
   }
   EXPECT_EQ(part.boundary_particles.size(),
             static_cast<std::size_t>(std::count(boundary.begin(), boundary.end(), std::uint8_t{1})));
-  // wall pairs: range t of wall w holds exactly that wall's pairs with particles in range t
+  // wall pairs: range t of wall w holds exactly that wall's pairs with particles in
+  // finishing range t
   std::size_t covered = 0;
   for (std::size_t w = 0; w < kWalls; ++w)
     for (std::size_t t = 0; t < T; ++t)
       for (std::size_t c = part.wall_pair_begin[w * (T + 1) + t]; c < part.wall_pair_begin[w * (T + 1) + t + 1];
            ++c, ++covered) {
         EXPECT_EQ(pw.wall[c], w);
-        EXPECT_EQ(range_of(part, pw.particle[c]), t);
+        EXPECT_EQ(finishing_range_of(part, pw.particle[c]), t);
       }
   EXPECT_EQ(covered, pw.size());
 }
@@ -126,11 +133,16 @@ TEST(ForcePartition, RebalancedCutsKeepTheInvariantsAndFollowTheBusyTime) {
   const ContactStore store = random_store(4);
   ForcePartition part;
   part.build(store, kParticles, kWalls, 2);
-  const std::size_t first_cut = part.pair_begin[1];
-  part.busy_seconds = {3.0, 1.0};  // range 0 was slower: its share of the pairs must shrink
+  const std::size_t first_cut = part.pair_begin[1], first_finish_cut = part.finish_begin[1];
+  EXPECT_EQ(first_finish_cut, kParticles / 2);  // a new system starts from equal shares
+  // Range 0 was slower before the barrier: its share of the pairs must shrink. Range 1 was
+  // slower after it: its share of the particles must shrink (the other cut, independently).
+  part.pair_busy_seconds = {3.0, 1.0};
+  part.finish_busy_seconds = {1.0, 3.0};
   part.build(store, kParticles, kWalls, 2);
   check_invariants(store, part, 2);
   EXPECT_LT(part.pair_begin[1], first_cut);
+  EXPECT_GT(part.finish_begin[1], first_finish_cut);
   // A list change is seen (revision), and so is the step count for the periodic rebalance.
   ContactStore changed = store;
   changed.adopt_particle_pairs(changed.particle_pairs.first, changed.particle_pairs.second);
