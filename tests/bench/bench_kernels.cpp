@@ -13,6 +13,7 @@
 #include <omp.h>
 #endif
 
+#include "engine/pair_batch.hpp"
 #include "engine/stepper.hpp"
 #include "io/packing_file.hpp"
 
@@ -137,6 +138,37 @@ void BM_OedometerForces(benchmark::State& state) {
   run_forces_only(state, w, oedometer_physics(), {.unbalanced = false, .damping_work = false});
 }
 
+// The lane arithmetic alone (engine/pair_batch.hpp compute_lanes: geometry and law of
+// every contact, the ledger off as in the loading), over the touching contacts of the settled
+// oedometer packing loaded into batches once, outside the timing: no copies into lanes, no
+// scatter, no history written back. The floor the batched kernel's structure cannot go
+// below; items = contacts.
+void BM_OedometerLaneArithmetic(benchmark::State& state) {
+  World w = oedometer_packing();
+  if (!has_packing(state, w)) return;
+  Stepper stepper(oedometer_physics());
+  stepper.prepare(w);
+  stepper.begin_step(w);  // contacts touching after one force step
+  const auto& pp = w.contacts.particle_pairs;
+  std::vector<detail::PairBatch> batches(1);
+  for (std::size_t c = 0; c < pp.size(); ++c) {
+    if (!pp.history[c].touching) continue;
+    if (batches.back().count == detail::PairBatch::kLanes) batches.emplace_back();
+    detail::load_lane(batches.back(), w.particles, c, pp.first[c], pp.second[c], pp.history[c]);
+  }
+  const PairParameters& q = stepper.pairs().particle_particle(0, 0);
+  const double dt = w.dt;
+  std::size_t contacts = 0;
+  for (const auto& b : batches) contacts += static_cast<std::size_t>(b.count);
+  for (auto _ : state) {
+    for (auto& b : batches) detail::compute_lanes<NoBond, false>(b, NoBond{}, q, dt, 0.5 * dt);
+    benchmark::DoNotOptimize(batches.data());
+    benchmark::ClobberMemory();
+  }
+  state.counters["contacts"] = static_cast<double>(contacts);
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(contacts));
+}
+
 // Full steps as the oedometer's loading stage runs them: no integration sums and no energy
 // ledger (scenario/oedometer.cpp), so the motion goes inside the threaded force loop.
 void BM_OedometerStep(benchmark::State& state) {
@@ -190,6 +222,7 @@ BENCHMARK(BM_ContactKernel)->ArgsProduct({{2287, 9805}, {1, 2}})->UseRealTime();
 BENCHMARK(BM_FullStep)->ArgsProduct({{2287, 9805}, {1, 2}})->UseRealTime();
 BENCHMARK(BM_OedometerForces)->ArgsProduct({{0}, {1, 2}})->UseRealTime();
 BENCHMARK(BM_OedometerStep)->ArgsProduct({{0}, {1, 2}})->UseRealTime();
+BENCHMARK(BM_OedometerLaneArithmetic);
 BENCHMARK(BM_NeighbourRebuild)->Arg(2287)->Arg(9805);
 BENCHMARK(BM_RebuildCheck)->Arg(2287)->Arg(9805);
 BENCHMARK(BM_Integrate)->ArgsProduct({{2287, 9805}, {1, 2}})->UseRealTime();
