@@ -8,12 +8,12 @@
 //
 // Particles are cut into T contiguous index ranges holding about the same number of pairs.
 // Thread t computes the pairs whose first body is in its range (the pair list is sorted by
-// first body, so they are contiguous and in pair order) and the wall pairs of its particles.
+// first body, so they are contiguous and in pair order).
 // * An "inner" particle has all its partners in its own range: every contribution it gets
 //   comes from its own thread, in pair order, so it is added at once (the serial scatter).
 // * A "boundary" particle has a partner in a lower range, whose thread computes that pair
 //   at an unknown time. All pairs of a boundary particle are stored in slots; after a
-//   barrier its thread sums them in pair order (the gather list), then adds its walls.
+//   barrier they are summed in pair order (the gather list), then its walls are added.
 // With Morton-ordered particles the ranges are compact regions and boundary particles are
 // a thin layer (a few per cent), so nearly all pairs take the serial scatter's cost.
 //
