@@ -9,12 +9,16 @@ std::vector<std::string> scene_columns(const std::vector<std::int64_t>& particle
   std::vector<std::string> names{"step", "time"};
   const char* axes[3] = {"x", "y", "z"};
   for (std::int64_t k : particles) {
-    const std::string p = "p" + std::to_string(k) + "_";
+    std::string p = "p";  // appended, not "p" + ...: GCC 12 warns (-Wrestrict) falsely on that form
+    p += std::to_string(k);
+    p += '_';
     for (const char* q : {"", "v", "w", "f", "t"})
       for (const char* a : axes) names.push_back(p + q + a);
   }
   for (std::size_t w = 0; w < walls; ++w) {
-    const std::string p = "w" + std::to_string(w) + "_";
+    std::string p = "w";
+    p += std::to_string(w);
+    p += '_';
     for (const char* q : {"f", ""})
       for (const char* a : axes) names.push_back(p + q + a);
   }
