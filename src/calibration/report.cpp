@@ -138,8 +138,11 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
   for (std::size_t k = 0; k < 3 + p.parameters.size() + p.targets.size() + 1; ++k) o << "---|";
   o << "\n";
   for (std::size_t k = 0; k < r.runs.size(); ++k) {
-    o << "| " << k + 1 << " | " << r.runs[k].role << (r.runs[k].iteration ? " " + std::to_string(r.runs[k].iteration) : "")
-      << (r.runs[k].replicate ? " (seed +" + std::to_string(r.runs[k].replicate) + ")" : std::string()) << " | ";
+    // Streamed piece by piece: GCC 12 warns (-Wrestrict, falsely) on " " + std::to_string(...).
+    o << "| " << k + 1 << " | " << r.runs[k].role;
+    if (r.runs[k].iteration) o << ' ' << r.runs[k].iteration;
+    if (r.runs[k].replicate) o << " (seed +" << r.runs[k].replicate << ')';
+    o << " | ";
     for (Eigen::Index j = 0; j < r.runs[k].x.size(); ++j) o << g(r.runs[k].x[j]) << " | ";
     for (Eigen::Index i = 0; i < r.runs[k].y.size(); ++i) o << g(r.runs[k].y[i]) << " | ";
     o << g(normalised_misfit(p, r.runs[k].y, run_tolerance), 3) << " | ";
