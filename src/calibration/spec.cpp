@@ -14,6 +14,7 @@
 #include "analysis/polyfit.hpp"
 #include "config/config_error.hpp"
 #include "io/format_number.hpp"
+#include "scenario/shear_box.hpp"
 
 namespace colza::calibration {
 
@@ -362,6 +363,7 @@ Spec read_spec(const std::string& path) {
       m.fail("loads", "needs two or more distinct normal stresses (Pa)");
     for (double l : s.loads)
       if (!(l > 0.0)) m.fail("loads", "normal stresses must be > 0 (Pa)");
+    if (const std::string clash = loads_sharing_a_label(s.loads); !clash.empty()) m.fail("loads", clash);
     if (mc.cohesion < 0.0)
       s.warnings.push_back("the measured line has a negative cohesion (" + fmt(mc.cohesion) + " Pa): check the data");
   }

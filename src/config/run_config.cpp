@@ -4,6 +4,7 @@
 
 #include "contact/slot_registry.hpp"
 #include "io/packing_file.hpp"
+#include "scenario/shear_box.hpp"
 
 namespace colza {
 
@@ -101,6 +102,8 @@ ShearBoxSpec read_shear_box(const ConfigNode& t, const ParticleSpec& particle) {
       b.normal_stresses.push_back(v);
     }
     if (b.normal_stresses.empty()) t.fail("normal_stresses", "needs at least one normal stress (Pa)");
+    if (const std::string clash = loads_sharing_a_label(b.normal_stresses); !clash.empty())
+      t.fail("normal_stresses", clash);
   }
   b.shear_speed = t.positive("shear_speed", b.shear_speed);
   b.shear_displacement = t.positive("shear_displacement", b.shear_displacement);

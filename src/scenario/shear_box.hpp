@@ -58,6 +58,11 @@ struct ShearLoadResult {
 // a series' load directory, a calibration run's load curve (+ ".csv").
 std::string load_label(double normal_stress);
 
+// Why a list of loads cannot be run as one series or calibration, or "" when it can: two
+// loads with the same label would write to one directory (or curve file), so every load
+// must appear once and loads must be at least ~1 Pa apart.
+std::string loads_sharing_a_label(const std::vector<double>& normal_stresses);
+
 ShearLoadResult run_shear_load(const RunConfig& config, const ShearSample& sample, double normal_stress,
                                Progress& progress);
 

@@ -293,6 +293,30 @@ TEST(CalibrateShearCurves, BadCurvesAreClearErrorsWithExitCode2) {
   }
 }
 
+TEST(CalibrateShearLoads, LoadsSharingALabelAreRefusedBeforeAnyRun) {
+  // A design run keeps one curve per load, named load-<sigma>Pa.csv (to the nearest pascal):
+  // loads that would share a name stop the calibration with exit code 2 and the spec's key.
+  const fs::path dir = scratch_dir("calibrate-shear-load-labels");
+  fs::create_directories(dir);
+  std::string curve = "shear_displacement,shear_stress\n";
+  for (int k = 0; k <= 6; ++k) curve += std::to_string(0.0005 * k) + "," + std::to_string(20000 + 500 * k) + "\n";
+  write_file(dir / "low.csv", curve);
+  write_file(dir / "high.csv", curve);
+  const fs::path spec = dir / "spec.toml";
+  write_file(spec, "stage = \"shear\"\n[model]\nconfig = \"" + source_path("tests/data/small_shear.toml") +
+                       "\"\n[[parameters]]\nname = \"Cn\"\nkey = \"contact.contact_bond.normal_strength\"\n"
+                       "design = [0.5, 1.5, 2.5]\n[measured]\ncohesion_uncertainty = 500.0\n"
+                       "tan_phi_uncertainty = 0.02\nloads = [25750.0, 25750.3, 78750.0]\n"
+                       "[[measured.curves]]\nnormal_stress = 25750.0\nfile = \"low.csv\"\n"
+                       "[[measured.curves]]\nnormal_stress = 78750.0\nfile = \"high.csv\"\n");
+  const fs::path out = dir / "out";
+  const CliResult r = run_colza("calibrate shear --quiet --spec " + spec.string() + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find(spec.string() + ": key 'measured.loads'"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("share the results directory load-25750Pa"), std::string::npos) << r.stderr_text;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(CalibrateShearLoads, SideBySideLoadsGiveTheSameRunsAsOneAfterTheOther) {
   // With --threads 2 and one job, a shear design run runs its two loads side by side (one
   // thread each); with --threads 1 one after the other. The runs' outputs must be the same

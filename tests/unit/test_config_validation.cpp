@@ -136,6 +136,15 @@ TEST(ConfigValidation, ShearBoxGeometryErrorsAreNamed) {
   EXPECT_EQ(shear_error("[shear_box]\nshear_plane = 0.09\n").key(), "shear_box.shear_plane");
   EXPECT_EQ(shear_error("[shear_box]\nnormal_stresses = [25.75e3, -1.0]\n").key(), "shear_box.normal_stresses");
   EXPECT_EQ(shear_error("[shear_box]\nlenght = 0.2\n").key(), "shear_box.lenght");
+  // Each load of a series writes to load-<sigma>Pa (to the nearest pascal): a load given twice,
+  // or two loads less than 1 Pa apart, would share that directory.
+  for (const char* loads : {"[25.75e3, 43.5e3, 25.75e3]", "[78750.2, 78750.4]"}) {
+    const ConfigError e = shear_error(std::string("[shear_box]\nnormal_stresses = ") + loads + "\n");
+    EXPECT_EQ(e.key(), "shear_box.normal_stresses") << loads;
+    EXPECT_NE(std::string(e.what()).find("share the results directory load-"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(read_run_config(Scenario::kShear,
+                                  ConfigReader::from_string("[shear_box]\nnormal_stresses = [78750.0, 78751.0]\n", "s.toml")));
   // The defaults are valid: physics.md section 4 (200 x 200 x 80 mm, shear plane at 40 mm,
   // four normal stresses 25.75 ... 78.75 kPa, 300 mm/min to 30 mm).
   const RunConfig c = read_run_config(Scenario::kShear, ConfigReader::empty());
