@@ -76,6 +76,25 @@ void expect_recovered(const nlohmann::json& s) {
     EXPECT_TRUE(s.contains(k)) << k;
 }
 
+// A measured shear curve every check accepts: 0 to 3 mm in 0.5 mm steps, 20 to 23 kPa.
+std::string valid_shear_curve() {
+  std::string curve = "shear_displacement,shear_stress\n";
+  for (int k = 0; k <= 6; ++k) curve += std::to_string(0.0005 * k) + "," + std::to_string(20000 + 500 * k) + "\n";
+  return curve;
+}
+
+// A shear calibration spec on the small shear box, bond strengths Cn and Cs as parameters,
+// measured curves low.csv at 25.75 kPa and `high_file` at 78.75 kPa; `measured_keys` go
+// into [measured] (e.g. "loads = [...]\n").
+std::string shear_spec(const std::string& high_file, const std::string& measured_keys = "") {
+  return "stage = \"shear\"\n[model]\nconfig = \"" + source_path("tests/data/small_shear.toml") +
+         "\"\n[[parameters]]\nname = \"Cn\"\nkey = \"contact.contact_bond.normal_strength\"\n"
+         "design = [0.5, 1.5, 2.5]\n[[parameters]]\nname = \"Cs\"\nkey = \"contact.contact_bond.shear_strength\"\n"
+         "design = [3.0, 2.0, 3.0]\n[measured]\ncohesion_uncertainty = 500.0\ntan_phi_uncertainty = 0.02\n" +
+         measured_keys + "[[measured.curves]]\nnormal_stress = 25750.0\nfile = \"low.csv\"\n"
+         "[[measured.curves]]\nnormal_stress = 78750.0\nfile = \"" + high_file + "\"\n";
+}
+
 }  // namespace
 
 TEST_F(CalibrateCompression, PaperProcedureRecoversTheParameters) {
@@ -264,9 +283,7 @@ TEST(CalibrateShearCurves, BadCurvesAreClearErrorsWithExitCode2) {
   // DEM run, naming the spec file, the curve's key and the reason.
   const fs::path dir = scratch_dir("calibrate-shear-curves");
   fs::create_directories(dir);
-  std::string good = "shear_displacement,shear_stress\n";
-  for (int k = 0; k <= 6; ++k) good += std::to_string(0.0005 * k) + "," + std::to_string(20000 + 500 * k) + "\n";
-  write_file(dir / "low.csv", good);
+  write_file(dir / "low.csv", valid_shear_curve());
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"", "does not exist"},
       {"shear_displacement,shear_stress\n0,0\n0.0015,2e4\n0.002,abc\n0.003,2e4\n", "line 4: column \"shear_stress\" is \"abc\""},
@@ -277,12 +294,7 @@ TEST(CalibrateShearCurves, BadCurvesAreClearErrorsWithExitCode2) {
     const std::string name = "high" + std::to_string(c) + ".csv";
     if (!cases[c].first.empty()) write_file(dir / name, cases[c].first);
     const fs::path spec = dir / ("spec" + std::to_string(c) + ".toml");
-    write_file(spec, "stage = \"shear\"\n[model]\nconfig = \"" + source_path("tests/data/small_shear.toml") +
-                    "\"\n[[parameters]]\nname = \"Cn\"\nkey = \"contact.contact_bond.normal_strength\"\n"
-                    "design = [0.5, 1.5, 2.5]\n[[parameters]]\nname = \"Cs\"\nkey = \"contact.contact_bond.shear_strength\"\n"
-                    "design = [3.0, 2.0, 3.0]\n[measured]\ncohesion_uncertainty = 500.0\ntan_phi_uncertainty = 0.02\n"
-                    "[[measured.curves]]\nnormal_stress = 25750.0\nfile = \"low.csv\"\n"
-                    "[[measured.curves]]\nnormal_stress = 78750.0\nfile = \"" + name + "\"\n");
+    write_file(spec, shear_spec(name));
     const fs::path out = dir / ("out" + std::to_string(c));
     const CliResult r = run_colza("calibrate shear --spec " + spec.string() + " --out " + out.string());
     EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
@@ -298,17 +310,10 @@ TEST(CalibrateShearLoads, LoadsSharingALabelAreRefusedBeforeAnyRun) {
   // loads that would share a name stop the calibration with exit code 2 and the spec's key.
   const fs::path dir = scratch_dir("calibrate-shear-load-labels");
   fs::create_directories(dir);
-  std::string curve = "shear_displacement,shear_stress\n";
-  for (int k = 0; k <= 6; ++k) curve += std::to_string(0.0005 * k) + "," + std::to_string(20000 + 500 * k) + "\n";
-  write_file(dir / "low.csv", curve);
-  write_file(dir / "high.csv", curve);
+  write_file(dir / "low.csv", valid_shear_curve());
+  write_file(dir / "high.csv", valid_shear_curve());
   const fs::path spec = dir / "spec.toml";
-  write_file(spec, "stage = \"shear\"\n[model]\nconfig = \"" + source_path("tests/data/small_shear.toml") +
-                       "\"\n[[parameters]]\nname = \"Cn\"\nkey = \"contact.contact_bond.normal_strength\"\n"
-                       "design = [0.5, 1.5, 2.5]\n[measured]\ncohesion_uncertainty = 500.0\n"
-                       "tan_phi_uncertainty = 0.02\nloads = [25750.0, 25750.3, 78750.0]\n"
-                       "[[measured.curves]]\nnormal_stress = 25750.0\nfile = \"low.csv\"\n"
-                       "[[measured.curves]]\nnormal_stress = 78750.0\nfile = \"high.csv\"\n");
+  write_file(spec, shear_spec("high.csv", "loads = [25750.0, 25750.3, 78750.0]\n"));
   const fs::path out = dir / "out";
   const CliResult r = run_colza("calibrate shear --quiet --spec " + spec.string() + " --out " + out.string());
   EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
