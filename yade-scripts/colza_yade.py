@@ -53,6 +53,8 @@ import sys
 import time
 import tomllib
 
+import colza_packing  # noqa: E402  (same folder; the scripts put it on sys.path)
+
 from yade import utils
 from yade.minieigenHP import Matrix3, Quaternion, Vector3
 from yade.wrapper import *  # noqa: F401,F403  (O and the engine, material and shape classes)
@@ -230,16 +232,8 @@ def read_wall(t):
 
 
 def read_packing(path):
-    """colza packing file: 'x y z r' per line, '#' comments."""
-    out = []
-    with open(path) as f:
-        for line in f:
-            s = line.strip()
-            if not s or s.startswith("#"):
-                continue
-            x, y, z, r = (float(v) for v in s.split()[:4])
-            out.append(([x, y, z], r))
-    return out
+    """colza packing file as ([x, y, z], r) pairs (colza_packing.py reads the format)."""
+    return [([x, y, z], r) for (x, y, z, r) in colza_packing.read_packing(path)]
 
 
 # ---------------------------------------------------------------------------------------

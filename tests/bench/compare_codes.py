@@ -40,6 +40,9 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "yade-scripts"))
+from colza_packing import read_packing  # noqa: E402  (pure Python, no YADE needed)
+
 # Defaults of the oedometer scenario (src/config/run_config.hpp).
 DENSITY = 1250.0
 KN, KS, MU = 437e3, 100e3, 0.20
@@ -67,18 +70,6 @@ def ensure_installed(binary, package):
     print(f"{binary} not found: installing the Debian package {package} ...", file=sys.stderr)
     subprocess.run(apt, env=dict(os.environ, DEBIAN_FRONTEND="noninteractive"), check=False)
     return shutil.which(binary) is not None
-
-
-def read_packing(path):
-    spheres = []
-    with open(path) as f:
-        for line in f:
-            line = line.strip()
-            if not line or line.startswith("#"):
-                continue
-            x, y, z, r = map(float, line.split()[:4])
-            spheres.append((x, y, z, r))
-    return spheres
 
 
 def peak_rss_kb(stderr_text):
