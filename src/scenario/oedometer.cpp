@@ -57,11 +57,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   if (o.packing_file.empty()) {
     place_sample(world, c);
     r.particles_generated = world.particles.size();
-    store_in_space_order(world, stepper);
-    stepper.prepare(world);
-    stepper.set_integration_sums({.unbalanced = true, .damping_work = false});  // no energy ledger is reported
-    r.settling = settle(world, stepper, c.sample.settle_unbalanced_force, c.sample.settle_max_time,
-                        static_cast<std::uint64_t>(c.sample.settle_check_interval), progress);
+    r.settling = settle_generated_sample(world, stepper, c.sample, progress);
     prep_clock.count_steps(r.settling.steps, r.particles_generated);
   } else {  // start from a settled packing, at rest
     for (const PackedSphere& s : read_packing(o.packing_file, "oedometer.packing_file"))

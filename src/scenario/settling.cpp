@@ -77,6 +77,14 @@ void store_in_space_order(World& world, Stepper& stepper) {
   stepper.invalidate_neighbours();
 }
 
+SettleResult settle_generated_sample(World& world, Stepper& stepper, const SampleSpec& sample, Progress& progress) {
+  store_in_space_order(world, stepper);
+  stepper.prepare(world);
+  stepper.set_integration_sums({.unbalanced = true, .damping_work = false});
+  return settle(world, stepper, sample.settle_unbalanced_force, sample.settle_max_time,
+                static_cast<std::uint64_t>(sample.settle_check_interval), progress);
+}
+
 std::size_t install_bonds(World& world, double gap) {
   const ParticleArrays& p = world.particles;
   auto& pairs = world.contacts.particle_pairs;

@@ -2,6 +2,7 @@
 // settling under gravity to a mean unbalanced force, discarding spheres above a rim,
 // and installing contact bonds at a chosen moment.
 #pragma once
+#include "config/run_config.hpp"
 #include "engine/stepper.hpp"
 #include "io/progress.hpp"
 
@@ -19,6 +20,12 @@ struct SettleResult {
 // or until `max_time` of simulated time has passed.
 SettleResult settle(World& world, Stepper& stepper, double threshold, double max_time,
                     std::uint64_t check_interval, Progress& progress);
+
+// A freshly generated sample's preparation, the same for the oedometer and the shear box:
+// stored in space order (store_in_space_order), the stepper prepared, then settled under
+// gravity to the [sample] criterion (settle_unbalanced_force, settle_max_time,
+// settle_check_interval) without an energy ledger (none is reported for settling).
+SettleResult settle_generated_sample(World& world, Stepper& stepper, const SampleSpec& sample, Progress& progress);
 
 // Removes the spheres whose top (z + r) lies above `z_top`; their contacts go with them.
 // Returns the number removed.

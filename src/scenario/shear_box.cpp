@@ -74,11 +74,7 @@ ShearSample prepare_shear_sample(const RunConfig& c, Progress& progress) {
                           " spheres fit without overlap in the generation volume; lower sample.count or raise "
                           "shear_box.generation_height");
   s.generated = world.particles.size();
-  store_in_space_order(world, stepper);
-  stepper.prepare(world);
-  stepper.set_integration_sums({.unbalanced = true, .damping_work = false});  // no energy ledger is reported
-  s.settling = settle(world, stepper, c.sample.settle_unbalanced_force, c.sample.settle_max_time,
-                      static_cast<std::uint64_t>(c.sample.settle_check_interval), progress);
+  s.settling = settle_generated_sample(world, stepper, c.sample, progress);
   clock.count_steps(s.settling.steps, s.generated);
   discard_above(world, stepper, b.height);
   store_in_space_order(world, stepper);
