@@ -11,6 +11,7 @@
 
 #include "cli/calibrate_command.hpp"
 #include "cli/run_commands.hpp"
+#include "core/interrupt.hpp"
 #include "core/version.hpp"
 
 namespace {
@@ -97,9 +98,14 @@ int main(int argc, char** argv) {
 #ifdef _OPENMP
   omp_set_num_threads(run->parsed() ? opt.threads : cal.threads);
 #endif
+  colza::install_interrupt_handlers();
   try {
     if (run->parsed()) return colza::run_command(opt);
     if (calibrate->parsed()) return colza::calibrate_command(cal);
+  } catch (const colza::Interrupted& e) {
+    std::fprintf(stderr, "colza: %s: stopped; the unfinished outputs were removed, earlier results are untouched\n",
+                 e.what());
+    return 128 + e.signal_number();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "colza: internal error: %s\n", e.what());
     return 1;

@@ -10,6 +10,7 @@
 #endif
 
 #include "contact/contact_law.hpp"
+#include "core/interrupt.hpp"
 #include "engine/pair_batch.hpp"
 #include "engine/pair_force.hpp"
 #include "engine/pair_sinks.hpp"
@@ -409,6 +410,7 @@ void Stepper::compute_forces(World& world) {
 }
 
 void Stepper::begin_step(World& world) {
+  throw_if_interrupted();  // Ctrl-C or SIGTERM: unwind between steps (core/interrupt.hpp)
   if (physics_.time_step.automatic && physics_.time_step.recompute_interval > 0 &&
       world.step % physics_.time_step.recompute_interval == 0)
     update_time_step(world);

@@ -1,6 +1,8 @@
 #include "io/output_dir.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <csignal>
 #include <fstream>
 #include <stdexcept>
 #include <unistd.h>
@@ -29,6 +31,35 @@ void write_text_atomically(const fs::path& file, const std::string& text) {
   fs::rename(tmp, file);
 }
 
+namespace {
+
+// Staging folders are named .colza-partial-<host>-<pid>: unique among the processes of all
+// machines that may share an output directory (a calibration's --runs on a network disk).
+std::string staging_prefix() {
+  char host[256] = {0};
+  if (::gethostname(host, sizeof host - 1) != 0) host[0] = 0;
+  return std::string(".colza-partial-") + host + "-";
+}
+
+// Removes the staging folders that processes of this machine left when they were killed
+// (SIGKILL, a crash: Ctrl-C and SIGTERM remove their own, see core/interrupt.hpp). A folder
+// whose process still runs, or that another machine wrote, is left alone.
+void remove_abandoned_staging(const fs::path& dir, const std::string& prefix) {
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const std::string pid_text = name.substr(prefix.size());
+    if (pid_text.empty() || pid_text.find_first_not_of("0123456789") != std::string::npos) continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(pid_text));
+    if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
+    std::error_code remove_error;
+    fs::remove_all(it->path(), remove_error);
+  }
+}
+
+}  // namespace
+
 OutputStaging::OutputStaging(const fs::path& dir, bool overwrite) : dir_(dir) {
   check_output_dir(dir, overwrite);
   std::error_code ec;
@@ -37,7 +68,9 @@ OutputStaging::OutputStaging(const fs::path& dir, bool overwrite) : dir_(dir) {
     if (ec) throw ConfigError("--out", dir.string(), "cannot create the directory: " + ec.message());
     created_dir_ = true;
   }
-  staging_ = dir / (".colza-partial-" + std::to_string(::getpid()));
+  const std::string prefix = staging_prefix();
+  remove_abandoned_staging(dir, prefix);
+  staging_ = dir / (prefix + std::to_string(::getpid()));
   fs::create_directories(staging_, ec);
   if (ec) throw ConfigError("--out", dir.string(), "cannot write into the directory: " + ec.message());
 }

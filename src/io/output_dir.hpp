@@ -1,6 +1,9 @@
 // Atomic result directories. Files are written into a hidden staging folder inside the
 // output directory and moved into place only when the whole run has succeeded, so a
 // failed or interrupted run never leaves half-written files nor replaces an earlier result.
+// The staging folder (.colza-partial-<host>-<pid>) is removed when the run fails or is
+// interrupted (core/interrupt.hpp); one left by a killed process of this machine is removed
+// by the next OutputStaging in the same directory.
 #pragma once
 #include <filesystem>
 #include <string>

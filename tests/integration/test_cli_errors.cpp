@@ -1,6 +1,12 @@
 // Bad input: a clear message naming file, key and reason, exit code 2, nothing written,
 // and an earlier result never replaced by a failed run.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <thread>
 
 #include "cli_runner.hpp"
 
@@ -76,4 +82,59 @@ TEST(CliErrors, UsageErrorsExitWithTwo) {
   EXPECT_EQ(run_colza("run notascenario --out /tmp/x").exit_code, 2);
   EXPECT_EQ(run_colza("run oedometer").exit_code, 2);  // --out missing
   EXPECT_EQ(run_colza("--help").exit_code, 0);
+}
+
+TEST(CliErrors, InterruptedRunRemovesItsPartialOutputsAndKeepsTheEarlierResult) {
+  // Ctrl-C (SIGINT) during a run: colza stops between two steps, removes its staging folder
+  // and exits with 128 + 2; the earlier result that --force would have replaced stays whole.
+  const fs::path out = scratch_dir("interrupted");
+  fs::create_directories(out);
+  write_file(out / "summary.json", "{\"earlier\": true}\n");
+  const fs::path err = out.parent_path() / "interrupted-stderr.txt";
+  const std::string cmd = std::string("exec ") + COLZA_EXECUTABLE + " run oedometer --quiet --force --config " +
+                          source_path("data/oedometer.toml") + " --out " + out.string() + " > /dev/null 2> " +
+                          err.string();
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // The full-size oedometer takes most of a minute; 1.5 s in, it is generating or settling.
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  ::kill(child, SIGINT);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_NE(read_file(err).find("interrupted by SIGINT"), std::string::npos) << read_file(err);
+  EXPECT_EQ(read_file(out / "summary.json"), "{\"earlier\": true}\n");
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(out)) ++entries;
+  EXPECT_EQ(entries, 1u);  // no staging folder left behind
+}
+
+TEST(CliErrors, StagingLeftByAKilledRunIsRemovedByTheNextRun) {
+  // A run killed outright (SIGKILL, a crash) cannot clean up; the next run into the same
+  // directory removes the staging folders of this machine's processes that have ended, and
+  // leaves those of other machines (a shared network disk) alone.
+  const fs::path out = scratch_dir("abandoned-staging");
+  fs::create_directories(out);
+  char host[256] = {0};
+  ASSERT_EQ(::gethostname(host, sizeof host - 1), 0);
+  const pid_t ended = ::fork();  // a process id that has ended
+  ASSERT_GE(ended, 0);
+  if (ended == 0) ::_exit(0);
+  ASSERT_EQ(::waitpid(ended, nullptr, 0), ended);
+  const fs::path abandoned = out / (".colza-partial-" + std::string(host) + "-" + std::to_string(ended));
+  const fs::path elsewhere = out / ".colza-partial-some-other-machine-1";
+  for (const fs::path& d : {abandoned, elsewhere}) {
+    fs::create_directories(d);
+    write_file(d / "curve.csv", "half\n");
+  }
+  const CliResult r = run_colza("run oedometer --quiet --config " + kConfig + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_TRUE(fs::exists(out / "summary.json"));
+  EXPECT_FALSE(fs::exists(abandoned));
+  EXPECT_TRUE(fs::exists(elsewhere / "curve.csv"));
 }
