@@ -220,11 +220,24 @@ void BM_Integrate(benchmark::State& state) {
 
 BENCHMARK(BM_ContactKernel)->ArgsProduct({{2287, 9805}, {1, 2}})->UseRealTime();
 BENCHMARK(BM_FullStep)->ArgsProduct({{2287, 9805}, {1, 2}})->UseRealTime();
+// The motion alone (integrate_motion, one thread, no sums), as the oedometer loading and the
+// shear stages run it inside the force loop; items = particles.
+void BM_IntegrateMotion(benchmark::State& state) {
+  World w = packing(static_cast<std::size_t>(state.range(0)));
+  IntegratorSettings s;
+  for (auto& f : w.particles.force) f = Vec3(1e-3, -2e-3, 5e-2);
+  for (auto _ : state) {
+    integrate_motion(w.particles, s, 1e-7, 0, w.particles.size());
+    benchmark::DoNotOptimize(w.particles.position.data());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
 BENCHMARK(BM_OedometerForces)->ArgsProduct({{0}, {1, 2}})->UseRealTime();
 BENCHMARK(BM_OedometerStep)->ArgsProduct({{0}, {1, 2}})->UseRealTime();
 BENCHMARK(BM_OedometerLaneArithmetic);
 BENCHMARK(BM_NeighbourRebuild)->Arg(2287)->Arg(9805);
 BENCHMARK(BM_RebuildCheck)->Arg(2287)->Arg(9805);
 BENCHMARK(BM_Integrate)->ArgsProduct({{2287, 9805}, {1, 2}})->UseRealTime();
+BENCHMARK(BM_IntegrateMotion)->Arg(2287)->Arg(9805);
 
 BENCHMARK_MAIN();
