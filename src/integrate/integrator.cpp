@@ -109,9 +109,67 @@ void integrate_range(ParticleArrays& p, const IntegratorSettings& s, double dt, 
   r.damping_work = damping_work;
 }
 
+// The motion of particles [begin, end) without sums, one degree of freedom per SIMD lane:
+// the Vec3 arrays are read as flat arrays of 3n doubles (component k = 3 i + d), so lanes
+// load and store contiguous memory instead of de-interleaving xyz triples. Each component
+// gets the operations of integrate_range in the same order (the same bits); the particle's
+// mass, inertia, their inverses and its fixed flag are first spread over its three
+// components, block by block.
+template <DampingForm kForm>
+void move_range(ParticleArrays& p, const IntegratorSettings& s, double dt, std::size_t begin, std::size_t end) {
+  constexpr std::size_t kBlock = 64;  // particles
+  const double alpha = s.damping;
+  const double gravity[3] = {s.gravity[0], s.gravity[1], s.gravity[2]};
+  double* position = p.position.data()->data();
+  double* velocity = p.velocity.data()->data();
+  double* spin = p.angular_velocity.data()->data();
+  const double* force = p.force.data()->data();
+  const double* torque = p.torque.data()->data();
+  const double* mass = p.mass.data();
+  const double* inertia = p.inertia.data();
+  const std::uint8_t* fixed = p.fixed.data();
+  // Per component of the block: weight m g_d (N), 1/m, 1/I, and 1.0 for a fixed particle.
+  alignas(64) double weight[3 * kBlock], inv_m[3 * kBlock], inv_i[3 * kBlock], is_fixed[3 * kBlock];
+  for (std::size_t block = begin; block < end; block += kBlock) {
+    const std::size_t count = std::min(kBlock, end - block);
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t i = block + k;
+      const double m = mass[i], mobility = 1.0 / m, spin_mobility = 1.0 / inertia[i];
+      const double f = fixed[i] != 0 ? 1.0 : 0.0;
+      for (int d = 0; d < 3; ++d) {
+        weight[3 * k + d] = m * gravity[d];
+        inv_m[3 * k + d] = mobility;
+        inv_i[3 * k + d] = spin_mobility;
+        is_fixed[3 * k + d] = f;
+      }
+    }
+    const std::size_t n = 3 * count;
+    double* x = position + 3 * block;
+    double* v_of = velocity + 3 * block;
+    double* w_of = spin + 3 * block;
+    const double* f_of = force + 3 * block;
+    const double* t_of = torque + 3 * block;
+#pragma omp simd
+    for (std::size_t k = 0; k < n; ++k) {
+      const double load = f_of[k] + weight[k];
+      const double v = v_of[k], w = w_of[k], t = t_of[k];
+      const double v_new = v + dt * damped_acceleration<kForm>(load, v, inv_m[k], alpha, dt);
+      const double w_new = w + dt * damped_acceleration<kForm>(t, w, inv_i[k], alpha, dt);
+      const double v_next = is_fixed[k] != 0.0 ? v : v_new;  // a fixed particle keeps its velocity
+      v_of[k] = v_next;
+      w_of[k] = is_fixed[k] != 0.0 ? w : w_new;
+      x[k] += dt * v_next;
+    }
+  }
+}
+
 template <DampingForm kForm>
 void integrate_range(ParticleArrays& p, const IntegratorSettings& s, double dt, std::size_t begin, std::size_t end,
                      RangeReport& r, double* unbalanced_out, IntegrationSums sums) {
+  if (!sums.unbalanced && !sums.damping_work) {
+    move_range<kForm>(p, s, dt, begin, end);
+    return;
+  }
   if (sums.unbalanced && sums.damping_work)
     integrate_range<kForm, true, true>(p, s, dt, begin, end, r, unbalanced_out);
   else if (sums.unbalanced)
