@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <signal.h>  // sigaction (POSIX)
 #include <cstring>
 #include <string>
 
@@ -25,9 +26,16 @@ extern "C" void record_signal(int signal_number) {
 
 }  // namespace
 
+namespace {
+const char* signal_name(int signal_number) {
+  if (signal_number == SIGINT) return "SIGINT (Ctrl-C)";
+  if (signal_number == SIGTERM) return "SIGTERM";
+  return "a signal";
+}
+}  // namespace
+
 Interrupted::Interrupted(int signal_number)
-    : std::runtime_error(std::string("interrupted by ") + (signal_number == SIGINT ? "SIGINT (Ctrl-C)" : signal_number == SIGTERM ? "SIGTERM" : "a signal")),
-      signal_number_(signal_number) {}
+    : std::runtime_error(std::string("interrupted by ") + signal_name(signal_number)), signal_number_(signal_number) {}
 
 void install_interrupt_handlers() {
   struct sigaction action;

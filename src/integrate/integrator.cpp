@@ -112,8 +112,8 @@ void integrate_range(ParticleArrays& p, const IntegratorSettings& s, double dt, 
 // The motion of particles [begin, end) without sums, one degree of freedom per SIMD lane:
 // the Vec3 arrays are read as flat arrays of 3n doubles (component k = 3 i + d), so lanes
 // load and store contiguous memory instead of de-interleaving xyz triples. Each component
-// gets the operations of integrate_range in the same order (the same bits); the particle's
-// mass, inertia, their inverses and its fixed flag are first spread over its three
+// gets the operations of integrate_range in the same order (the same bits); each particle's
+// weight components m g_d, 1/m, 1/I and fixed flag are first spread over its three
 // components, block by block.
 template <DampingForm kForm>
 void move_range(ParticleArrays& p, const IntegratorSettings& s, double dt, std::size_t begin, std::size_t end) {
