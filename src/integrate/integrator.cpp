@@ -28,6 +28,20 @@ inline double damped_acceleration(double load, double velocity, double mobility,
   }
 }
 
+// The particle state as plain arrays: a Vec3 array is three contiguous doubles per particle
+// (x y z), so position[3 i + d] is component d of particle i.
+struct FlatState {
+  double *position, *velocity, *spin;
+  const double *force, *torque, *mass, *inertia;
+  const std::uint8_t* fixed;
+};
+inline FlatState flat_state(ParticleArrays& p) {
+  static_assert(sizeof(Vec3) == 3 * sizeof(double));
+  return {p.position.data()->data(), p.velocity.data()->data(), p.angular_velocity.data()->data(),
+          p.force.data()->data(),    p.torque.data()->data(),   p.mass.data(),
+          p.inertia.data(),          p.fixed.data()};
+}
+
 struct RangeReport {
   std::size_t free_count = 0;
   double unbalanced_sum = 0.0, max_unbalanced = 0.0, damping_work = 0.0;
@@ -49,15 +63,7 @@ void integrate_range(ParticleArrays& p, const IntegratorSettings& s, double dt, 
   const double gx = s.gravity[0], gy = s.gravity[1], gz = s.gravity[2];
   double unbalanced_sum = 0.0, max_unbalanced = r.max_unbalanced, damping_work = 0.0;
   std::size_t free_count = 0;
-  double* position = p.position.data()->data();  // Vec3 is three contiguous doubles
-  double* velocity = p.velocity.data()->data();
-  double* spin = p.angular_velocity.data()->data();
-  const double* force = p.force.data()->data();
-  const double* torque = p.torque.data()->data();
-  const double* mass = p.mass.data();
-  const double* inertia = p.inertia.data();
-  const std::uint8_t* fixed = p.fixed.data();
-  static_assert(sizeof(Vec3) == 3 * sizeof(double));
+  const auto [position, velocity, spin, force, torque, mass, inertia, fixed] = flat_state(p);
   alignas(64) double unbalanced[kBlock];
   alignas(64) double work[6][kBlock];  // damping work terms in the order they are summed
   for (std::size_t block = begin; block < end; block += kBlock) {
@@ -120,14 +126,7 @@ void move_range(ParticleArrays& p, const IntegratorSettings& s, double dt, std::
   constexpr std::size_t kBlock = 64;  // particles
   const double alpha = s.damping;
   const double gravity[3] = {s.gravity[0], s.gravity[1], s.gravity[2]};
-  double* position = p.position.data()->data();
-  double* velocity = p.velocity.data()->data();
-  double* spin = p.angular_velocity.data()->data();
-  const double* force = p.force.data()->data();
-  const double* torque = p.torque.data()->data();
-  const double* mass = p.mass.data();
-  const double* inertia = p.inertia.data();
-  const std::uint8_t* fixed = p.fixed.data();
+  const auto [position, velocity, spin, force, torque, mass, inertia, fixed] = flat_state(p);
   // Per component of the block: weight m g_d (N), 1/m, 1/I, and 1.0 for a fixed particle.
   alignas(64) double weight[3 * kBlock], inv_m[3 * kBlock], inv_i[3 * kBlock], is_fixed[3 * kBlock];
   for (std::size_t block = begin; block < end; block += kBlock) {
