@@ -22,6 +22,8 @@
 #include "calibration/spec.hpp"
 #include "config/config_error.hpp"
 
+#include "scratch_dir.hpp"
+
 using namespace colza;
 using namespace colza::calibration;
 
@@ -223,8 +225,7 @@ TEST(CalibrationScatter, ReplicatesNeedAModelWithOtherRealisationsAndTwoOfThem) 
 }
 
 TEST(CalibrationScatter, SpecKeyReplicates) {
-  const auto dir = std::filesystem::temp_directory_path() / "colza-test-scatter-spec";
-  std::filesystem::create_directories(dir);
+  const colza::testing::ScratchDir dir;
   auto spec_with = [&](const std::string& scatter) {
     const auto file = dir / "spec.toml";
     std::ofstream(file) << "stage = \"shear\"\n[model]\nconfig = \"" COLZA_SOURCE_DIR "/tests/data/small_shear.toml\"\n"
@@ -249,5 +250,4 @@ TEST(CalibrationScatter, SpecKeyReplicates) {
   EXPECT_EQ(error("[scatter]\nreplicates = 1\n").rfind("scatter.replicates | must be 0 (off) or at least 2", 0), 0u);
   EXPECT_EQ(error("[scatter]\nreplicates = 1.5\n").rfind("scatter.replicates | must be a whole number", 0), 0u);
   EXPECT_EQ(error("[scatter]\nseeds = 3\n").rfind("scatter.seeds | unknown key", 0), 0u);
-  std::filesystem::remove_all(dir);
 }

@@ -10,6 +10,8 @@
 
 #include "config/run_config.hpp"
 
+#include "scratch_dir.hpp"
+
 using namespace colza;
 
 namespace {
@@ -32,22 +34,6 @@ ConfigError oedometer_error(const std::string& toml) {
   });
 }
 
-// A temporary directory removed at the end of the test.
-struct TempDir {
-  std::filesystem::path path;
-  TempDir() {
-    path = std::filesystem::temp_directory_path() /
-           ("colza_unit_config_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(path);
-  }
-  ~TempDir() { std::filesystem::remove_all(path); }
-  std::string write(const std::string& name, const std::string& text) const {
-    const auto file = path / name;
-    std::ofstream(file) << text;
-    return file.string();
-  }
-};
 
 }  // namespace
 
@@ -102,7 +88,7 @@ TEST(ConfigValidation, OtherRangeAndChoiceErrors) {
 }
 
 TEST(ConfigValidation, MissingPackingFileOfASceneIsNamed) {
-  TempDir dir;
+  const colza::testing::ScratchDir dir;
   const std::string cfg = dir.write("scene.toml",
                                     "scenario = \"scene\"\n"
                                     "[integration]\ntime_step = 1e-6\n"
@@ -110,7 +96,7 @@ TEST(ConfigValidation, MissingPackingFileOfASceneIsNamed) {
   const ConfigError e = expect_config_error([&] { load_run_config(Scenario::kScene, cfg, {}); });
   EXPECT_EQ(e.key(), "scene.packing_file");
   // The relative path is resolved next to the config file.
-  EXPECT_EQ(std::filesystem::path(e.file()), dir.path / "no_such_packing.txt");
+  EXPECT_EQ(std::filesystem::path(e.file()), dir / "no_such_packing.txt");
 
   // With the file present the scene reads it ("x y z r" per line).
   dir.write("no_such_packing.txt", "# x y z r\n0.0 0.0 0.01 0.003\n0.0 0.0 0.02 0.0035\n");
@@ -122,7 +108,7 @@ TEST(ConfigValidation, MissingPackingFileOfASceneIsNamed) {
 }
 
 TEST(ConfigValidation, MissingPackingFileOfTheOedometerIsNamed) {
-  TempDir dir;
+  const colza::testing::ScratchDir dir;
   const std::string cfg = dir.write("oed.toml", "[oedometer]\npacking_file = \"settled.txt\"\n");
   const ConfigError e = expect_config_error([&] { load_run_config(Scenario::kOedometer, cfg, {}); });
   EXPECT_EQ(e.key(), "oedometer.packing_file");

@@ -14,15 +14,11 @@
 #include "io/hdf5_writer.hpp"
 #include "io/table.hpp"
 
+#include "scratch_dir.hpp"
+
 using namespace colza;
 
 namespace {
-
-std::filesystem::path scratch_file(const char* name) {
-  const auto dir = std::filesystem::temp_directory_path() / "colza-unit-hdf5";
-  std::filesystem::create_directories(dir);
-  return dir / name;
-}
 
 std::vector<double> read_doubles(const H5::H5File& f, const std::string& path) {
   H5::DataSet ds = f.openDataSet(path);
@@ -41,7 +37,8 @@ H5O_info_t times_of(const H5::H5File& f, const std::string& path) {
 }  // namespace
 
 TEST(Hdf5Writer, WritesWhatReadsBackAndNoTimes) {
-  const auto file = scratch_file("result.h5");
+  const colza::testing::ScratchDir dir;
+  const auto file = dir / "result.h5";
   Table t({"time", "force"});
   t.add_row({0.0, 1.5});
   t.add_row({1e-3, -2.25});

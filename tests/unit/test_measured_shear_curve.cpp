@@ -16,6 +16,8 @@
 #include "calibration/spec.hpp"
 #include "config/config_error.hpp"
 
+#include "scratch_dir.hpp"
+
 using namespace colza;
 using namespace colza::calibration;
 namespace fs = std::filesystem;
@@ -26,17 +28,7 @@ const StrengthDefinition kWindow{false, {0.0015, 0.003}};  // mean over 1.5-3 mm
 
 class MeasuredShearCurveTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("colza-unit-" + std::to_string(::getpid())) /
-           ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir_ / name) << text;
-    return (dir_ / name).string();
-  }
+  std::string write(const std::string& name, const std::string& text) const { return dir_.write(name, text); }
   // Rows every 0.5 mm from 0 to `end_mm`, tau = 1000 + 100 * (d in mm) Pa.
   std::string even_curve(const std::string& name, double end_mm, double tau0 = 1000.0) const {
     std::string t = "shear_displacement,shear_stress\n";
@@ -65,7 +57,7 @@ class MeasuredShearCurveTest : public ::testing::Test {
     }
     return "no error";
   }
-  fs::path dir_;
+  colza::testing::ScratchDir dir_;
 };
 
 }  // namespace
