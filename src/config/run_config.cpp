@@ -4,6 +4,7 @@
 
 #include "contact/slot_registry.hpp"
 #include "io/packing_file.hpp"
+#include "scenario/packing_check.hpp"
 #include "scenario/shear_box.hpp"
 
 namespace colza {
@@ -221,14 +222,21 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
     c.oedometer = read_oedometer(root.table("oedometer"), c.particle);
     if (!c.oedometer.packing_file.empty()) {
       c.oedometer.packing_file = resolve_input_path(reader, "oedometer.packing_file", c.oedometer.packing_file);
-      read_packing(c.oedometer.packing_file, "oedometer.packing_file");  // fail early if missing or malformed
+      // Fail early if missing, malformed, not fitting the cylinder or not settled.
+      const auto spheres = read_packing(c.oedometer.packing_file, "oedometer.packing_file");
+      check_packing_in_cylinder(spheres, 0.5 * c.oedometer.cylinder_diameter, c.oedometer.packing_file,
+                                "oedometer.packing_file");
+      check_packing_overlaps(spheres, c.oedometer.packing_file, "oedometer.packing_file");
     }
   } else if (scenario == Scenario::kShear) {
     c.sample = read_sample(root.table("sample"));
     c.shear_box = read_shear_box(root.table("shear_box"), c.particle);
     if (!c.shear_box.packing_file.empty()) {
       c.shear_box.packing_file = resolve_input_path(reader, "shear_box.packing_file", c.shear_box.packing_file);
-      read_packing(c.shear_box.packing_file, "shear_box.packing_file");
+      const auto spheres = read_packing(c.shear_box.packing_file, "shear_box.packing_file");
+      check_packing_in_box(spheres, c.shear_box.length, c.shear_box.width, c.shear_box.packing_file,
+                           "shear_box.packing_file");
+      check_packing_overlaps(spheres, c.shear_box.packing_file, "shear_box.packing_file");
     }
   } else {
     c.scene = read_scene(root.table("scene"), reader);

@@ -25,6 +25,7 @@ std::vector<PackedSphere> read_packing(const std::string& file, const std::strin
       throw ConfigError(file, key, "line " + std::to_string(line_no) + ": expected 'x y z r'");
     if (!(p.radius > 0.0) || !p.position.allFinite())
       throw ConfigError(file, key, "line " + std::to_string(line_no) + ": radius must be positive, values finite");
+    p.line = line_no;
     spheres.push_back(p);
   }
   return spheres;

@@ -11,6 +11,7 @@ namespace colza {
 struct PackedSphere {
   Vec3 position;
   double radius;
+  int line = 0;  // line of the packing file it was read from (0: not read from a file)
 };
 
 // Throws ConfigError naming `file` and `key_for_errors` when missing or malformed.

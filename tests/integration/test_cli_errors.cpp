@@ -57,6 +57,17 @@ TEST(CliErrors, MissingConfigAndPackingFiles) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.stderr_text.find("oedometer.packing_file"), std::string::npos) << r.stderr_text;
   EXPECT_FALSE(fs::exists(out));
+  // A packing that does not fit the 100 mm cylinder (written in millimetres, say).
+  fs::create_directories(out.parent_path());
+  const fs::path packing = out.parent_path() / "packing-in-mm.txt";
+  write_file(packing, "# x y z r\n10.0 5.0 3.5 3.2\n");
+  r = run_colza("run oedometer --quiet --config " + kConfig + " --set oedometer.packing_file=" + packing.string() +
+                " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find(packing.string() + ": key 'oedometer.packing_file': line 2:"), std::string::npos)
+      << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("does not fit this container"), std::string::npos) << r.stderr_text;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 TEST(CliErrors, ExistingResultIsKeptWithoutForceAndAfterAFailedRun) {
