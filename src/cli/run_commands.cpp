@@ -63,9 +63,13 @@ void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputSta
                   {{"particles/settled", &r.settled}, {"particles/final", &r.final_state}});
   write_json(out.path("summary.json"), s);
 
-  std::printf("oedometer: %zu particles (%zu generated), bulk density %.1f kg/m^3, settling %s after %.3f s\n",
-              r.particles, r.particles_generated, r.bulk_density, r.settling.converged ? "converged" : "DID NOT converge",
-              r.settling.simulated_time);
+  if (c.oedometer.packing_file.empty())
+    std::printf("oedometer: %zu particles (%zu generated), bulk density %.1f kg/m^3, settling %s after %.3f s\n",
+                r.particles, r.particles_generated, r.bulk_density,
+                r.settling.converged ? "converged" : "DID NOT converge", r.settling.simulated_time);
+  else
+    std::printf("oedometer: %zu particles (of %zu read from %s), bulk density %.1f kg/m^3\n", r.particles,
+                r.particles_generated, c.oedometer.packing_file.c_str(), r.bulk_density);
   std::printf("  max piston force %.1f N (stop: %s); fit F = c0 + c1 s + c2 s^2 over %.0f..%.0f N:", r.max_force,
               r.stop_reason.c_str(), c.oedometer.fit_force_min, c.oedometer.fit_force_max);
   if (r.fit.valid)

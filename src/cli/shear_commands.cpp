@@ -84,7 +84,10 @@ void run_shear_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging
   stages.insert(stages.end(), r.stages.begin(), r.stages.end());
   add_timing(s, stages);
   write_load(out, c, r, s);
-  std::printf("shear: %zu particles (%zu generated)\n", r.particles, sample.generated);
+  if (c.shear_box.packing_file.empty())
+    std::printf("shear: %zu particles (%zu generated)\n", r.particles, sample.generated);
+  else
+    std::printf("shear: %zu particles (read from %s)\n", r.particles, c.shear_box.packing_file.c_str());
   print_load(r);
 }
 
