@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <utility>
 
 #include "core/particles.hpp"
 
@@ -45,23 +46,26 @@ void merge_history(std::vector<Index>& new_a, std::vector<Index>& new_b,
   new_h.swap(out_h);
 }
 
+// Replaces a list's sorted keys (a, b) and histories h by the new sorted keys, the histories
+// carried over by merge_history.
+void adopt(std::vector<Index>& a, std::vector<Index>& b, std::vector<ContactHistory>& h, std::vector<Index> new_a,
+           std::vector<Index> new_b) {
+  std::vector<ContactHistory> new_h;
+  merge_history(new_a, new_b, a, b, h, new_h);
+  a.swap(new_a);
+  b.swap(new_b);
+  h.swap(new_h);
+}
+
 }  // namespace
 
 void ContactStore::adopt_particle_pairs(std::vector<Index> first, std::vector<Index> second) {
-  std::vector<ContactHistory> history;
-  merge_history(first, second, particle_pairs.first, particle_pairs.second, particle_pairs.history, history);
-  particle_pairs.first.swap(first);
-  particle_pairs.second.swap(second);
-  particle_pairs.history.swap(history);
+  adopt(particle_pairs.first, particle_pairs.second, particle_pairs.history, std::move(first), std::move(second));
   ++revision_;
 }
 
 void ContactStore::adopt_wall_pairs(std::vector<Index> wall, std::vector<Index> particle) {
-  std::vector<ContactHistory> history;
-  merge_history(wall, particle, wall_pairs.wall, wall_pairs.particle, wall_pairs.history, history);
-  wall_pairs.wall.swap(wall);
-  wall_pairs.particle.swap(particle);
-  wall_pairs.history.swap(history);
+  adopt(wall_pairs.wall, wall_pairs.particle, wall_pairs.history, std::move(wall), std::move(particle));
   ++revision_;
 }
 
