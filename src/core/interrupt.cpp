@@ -2,9 +2,10 @@
 
 #include <atomic>
 #include <csignal>
-#include <signal.h>  // sigaction (POSIX)
 #include <cstring>
 #include <string>
+
+#include <signal.h>  // sigaction (POSIX)
 
 namespace colza {
 
@@ -24,14 +25,12 @@ extern "C" void record_signal(int signal_number) {
   }
 }
 
-}  // namespace
-
-namespace {
 const char* signal_name(int signal_number) {
   if (signal_number == SIGINT) return "SIGINT (Ctrl-C)";
   if (signal_number == SIGTERM) return "SIGTERM";
   return "a signal";
 }
+
 }  // namespace
 
 Interrupted::Interrupted(int signal_number)

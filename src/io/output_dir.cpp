@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <csignal>
 #include <fstream>
 #include <stdexcept>
+#include <signal.h>  // kill (POSIX)
 #include <unistd.h>
 
 #include "config/config_error.hpp"
