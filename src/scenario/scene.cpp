@@ -8,17 +8,20 @@ namespace colza {
 std::vector<std::string> scene_columns(const std::vector<std::int64_t>& particles, std::size_t walls) {
   std::vector<std::string> names{"step", "time"};
   const char* axes[3] = {"x", "y", "z"};
-  for (std::int64_t k : particles) {
-    std::string p = "p";  // appended, not "p" + ...: GCC 12 warns (-Wrestrict) falsely on that form
-    p += std::to_string(k);
+  // "p3_", "w0_": appended, not "p" + std::to_string(...): GCC 12 warns (-Wrestrict) falsely on that form.
+  const auto prefix = [](char kind, std::int64_t index) {
+    std::string p(1, kind);
+    p += std::to_string(index);
     p += '_';
+    return p;
+  };
+  for (std::int64_t k : particles) {
+    const std::string p = prefix('p', k);
     for (const char* q : {"", "v", "w", "f", "t"})
       for (const char* a : axes) names.push_back(p + q + a);
   }
   for (std::size_t w = 0; w < walls; ++w) {
-    std::string p = "w";
-    p += std::to_string(w);
-    p += '_';
+    const std::string p = prefix('w', static_cast<std::int64_t>(w));
     for (const char* q : {"f", ""})
       for (const char* a : axes) names.push_back(p + q + a);
   }
