@@ -24,11 +24,12 @@ struct Excess {
   const char* where = "";
 };
 
+// `excess(s)` gives sphere s's Excess over the container described by `container`.
+template <class ExcessOf>
 void check_each(const std::vector<PackedSphere>& spheres, const std::string& file, const std::string& key,
-                const std::string& container, Excess (*excess)(const PackedSphere&, const double*),
-                const double* bounds) {
+                const std::string& container, ExcessOf&& excess) {
   for (const PackedSphere& s : spheres) {
-    const Excess e = excess(s, bounds);
+    const Excess e = excess(s);
     if (e.by > kMaxSettledOverlapFraction * s.radius)
       throw ConfigError(file, key,
                         describe(s) + " lies " + format_significant(e.by * 1e3, 3) + " mm beyond " + e.where +
@@ -41,34 +42,29 @@ void check_each(const std::vector<PackedSphere>& spheres, const std::string& fil
 
 void check_packing_in_cylinder(const std::vector<PackedSphere>& spheres, double radius, const std::string& file,
                                const std::string& key) {
-  const double bounds[1] = {radius};
-  check_each(
-      spheres, file, key, "the cylinder (radius " + format_significant(radius * 1e3, 6) + " mm, floor at z = 0)",
-      [](const PackedSphere& s, const double* b) {
-        const double wall = std::hypot(s.position[0], s.position[1]) + s.radius - b[0];
-        const double floor = s.radius - s.position[2];
-        return wall >= floor ? Excess{wall, "the wall"} : Excess{floor, "the floor"};
-      },
-      bounds);
+  check_each(spheres, file, key,
+             "the cylinder (radius " + format_significant(radius * 1e3, 6) + " mm, floor at z = 0)",
+             [&](const PackedSphere& s) {
+               const double wall = std::hypot(s.position[0], s.position[1]) + s.radius - radius;
+               const double floor = s.radius - s.position[2];
+               return wall >= floor ? Excess{wall, "the wall"} : Excess{floor, "the floor"};
+             });
 }
 
 void check_packing_in_box(const std::vector<PackedSphere>& spheres, double length, double width,
                           const std::string& file, const std::string& key) {
-  const double bounds[2] = {length, width};
-  check_each(
-      spheres, file, key,
-      "the box (" + format_significant(length * 1e3, 6) + " x " + format_significant(width * 1e3, 6) +
-          " mm, floor at z = 0)",
-      [](const PackedSphere& s, const double* b) {
-        const Excess candidates[5] = {{s.radius - s.position[0], "the wall x = 0"},
-                                      {s.position[0] + s.radius - b[0], "the wall x = length"},
-                                      {s.radius - s.position[1], "the wall y = 0"},
-                                      {s.position[1] + s.radius - b[1], "the wall y = width"},
-                                      {s.radius - s.position[2], "the floor"}};
-        return *std::max_element(std::begin(candidates), std::end(candidates),
-                                 [](const Excess& a, const Excess& c) { return a.by < c.by; });
-      },
-      bounds);
+  check_each(spheres, file, key,
+             "the box (" + format_significant(length * 1e3, 6) + " x " + format_significant(width * 1e3, 6) +
+                 " mm, floor at z = 0)",
+             [&](const PackedSphere& s) {
+               const Excess candidates[5] = {{s.radius - s.position[0], "the wall x = 0"},
+                                             {s.position[0] + s.radius - length, "the wall x = length"},
+                                             {s.radius - s.position[1], "the wall y = 0"},
+                                             {s.position[1] + s.radius - width, "the wall y = width"},
+                                             {s.radius - s.position[2], "the floor"}};
+               return *std::max_element(std::begin(candidates), std::end(candidates),
+                                        [](const Excess& a, const Excess& c) { return a.by < c.by; });
+             });
 }
 
 void check_packing_overlaps(const std::vector<PackedSphere>& spheres, const std::string& file,
