@@ -26,6 +26,14 @@ damping (pair gran/hooke/history with zero viscous damping). YADE's cylinder is 
 cylinder (YADE has no analytic cylinder wall for spheres); LAMMPS uses fix wall/gran
 zcylinder and a moving fix wall/gran/region plane for the piston.
 
+YADE runs twice per round. Row "YADE" is its cheapest linear law (FrictMat, FrictPhys,
+Law2_ScGeom_FrictPhys_CundallStrack) with one Young modulus, so a pair's Kn = E 2 R1 R2 /
+(R1 + R2) is within a few per cent of colza's kn/2, not equal to it. Row "YADE exact" is the
+law the cross-check uses to make YADE compute colza's sphere-sphere law exactly (one
+CohFrictMat per distinct radius with young = Kn / R, Ig2_Sphere_Sphere_ScGeom6D,
+Law2_ScGeom6D_CohFrictPhys_CohesionMoment without bonds; yade-scripts/colza_yade.py). Its
+walls are those of the first row.
+
 Neither YADE nor LAMMPS is needed by the build or the tests: this script is run by hand,
 e.g.  python3 tests/bench/compare_codes.py --colza build/src/colza --steps 20000
 """
@@ -162,7 +170,28 @@ def run_lammps(spheres, dt, steps, work):
     return dict(code="LAMMPS", particles=int(m.group(3)), steps=int(m.group(2)), seconds=float(m.group(1)), rss=rss)
 
 
-def write_yade(path, packing, dt, steps):
+# YADE's sphere-sphere law per row: (materials and bodies, Ig2 for two spheres, Ip2, Law2).
+YADE_LAWS = {
+    "YADE": ("""for (x, y, z, r) in spheres:
+    O.bodies.append(sphere((x, y, z), r, material=mat))
+""", "Ig2_Sphere_Sphere_ScGeom()", "", ""),
+    # colza_yade.py (Model.material_for, build_engines): Kn = young R exactly; no bonds here.
+    "YADE exact": (f"""per_radius = {{}}
+for (x, y, z, r) in spheres:
+    if r not in per_radius:
+        per_radius[r] = O.materials.append(CohFrictMat(
+            young={series(KN, KN)!r} / r, poisson={KS / KN!r}, density={DENSITY}, frictionAngle=math.atan({MU}),
+            isCohesive=True, momentRotationLaw=False, alphaKr=0.0, alphaKtw=0.0, etaRoll=-1.0, etaTwist=-1.0,
+            fragile=True))
+    O.bodies.append(sphere((x, y, z), r, material=per_radius[r]))
+""", "Ig2_Sphere_Sphere_ScGeom6D(avoidGranularRatcheting=False)",
+        "Ip2_CohFrictMat_CohFrictMat_CohFrictPhys(setCohesionNow=False, setCohesionOnNewContacts=False), ",
+        "Law2_ScGeom6D_CohFrictPhys_CohesionMoment(useIncrementalForm=False, always_use_moment_law=False), "),
+}
+
+
+def write_yade(path, packing, dt, steps, law):
+    bodies, ig2_spheres, ip2_spheres, law2_spheres = YADE_LAWS[law]
     top_expr = "max(s[2] + s[3] for s in spheres)"
     r_mean = "sum(s[3] for s in spheres) / len(spheres)"
     with open(path, "w") as f:
@@ -181,9 +210,7 @@ E = {KN} / (2.0 * r_mean)
 mat = O.materials.append(FrictMat(young=E, poisson={KS / KN!r}, frictionAngle=math.atan({MU}), density={DENSITY}))
 wmat = O.materials.append(FrictMat(young={KN_W} / (2.0 * r_mean), poisson={KS_W / KN_W!r},
                                    frictionAngle=math.atan({MU_W}), density=1000.0))
-for (x, y, z, r) in spheres:
-    O.bodies.append(sphere((x, y, z), r, material=mat))
-O.bodies.append(wall(0.0, axis=2, sense=1, material=wmat))
+{bodies}O.bodies.append(wall(0.0, axis=2, sense=1, material=wmat))
 piston = wall(top, axis=2, sense=-1, material=wmat)
 piston.state.vel = Vector3(0, 0, -{PISTON_SPEED!r})
 pid = O.bodies.append(piston)
@@ -192,8 +219,9 @@ O.bodies.append(geom.facetCylinder(center=(0, 0, 0.5 * (top + 0.01)), radius={CY
 O.engines = [
     ForceResetter(),
     InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb(), Bo1_Facet_Aabb()], verletDist={SKIN}),
-    InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
-                    [Ip2_FrictMat_FrictMat_FrictPhys()], [Law2_ScGeom_FrictPhys_CundallStrack()]),
+    InteractionLoop([{ig2_spheres}, Ig2_Facet_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
+                    [{ip2_spheres}Ip2_FrictMat_FrictMat_FrictPhys()],
+                    [{law2_spheres}Law2_ScGeom_FrictPhys_CundallStrack()]),
     NewtonIntegrator(damping={DAMPING}, gravity=(0, 0, -9.81)),
 ]
 O.dt = {dt!r}
@@ -204,16 +232,18 @@ print('COLZA_BENCH particles=%d steps=%d seconds=%.6f' % (len(spheres), O.iter, 
 """)
 
 
-def run_yade(packing, dt, steps, work):
-    d = os.path.join(work, "yade")
+def run_yade(packing, dt, steps, work, law):
+    name = law.lower().replace(" ", "-")
+    d = os.path.join(work, name)
     os.makedirs(d, exist_ok=True)
     script = os.path.join(d, "oedometer_bench.py")
-    write_yade(script, os.path.abspath(packing), dt, steps)
-    out, err, rss, _ = run_timed(["yade", "-n", "-j", "1", "-x", script], d, os.path.join(work, "yade.log"))
+    write_yade(script, os.path.abspath(packing), dt, steps, law)
+    log = os.path.join(work, name + ".log")
+    out, err, rss, _ = run_timed(["yade", "-n", "-j", "1", "-x", script], d, log)
     m = re.search(r"COLZA_BENCH particles=(\d+) steps=(\d+) seconds=([0-9.eE+-]+)", out + err)
     if not m:
-        sys.exit(f"could not read the YADE timing, see {work}/yade.log")
-    return dict(code="YADE", particles=int(m.group(1)), steps=int(m.group(2)), seconds=float(m.group(3)), rss=rss)
+        sys.exit(f"could not read the YADE timing, see {log}")
+    return dict(code=law, particles=int(m.group(1)), steps=int(m.group(2)), seconds=float(m.group(3)), rss=rss)
 
 
 def main():
@@ -237,7 +267,9 @@ def main():
     others = []  # (code, runner taking the step count)
     for code, binary, package, skip, runner in (
             ("LAMMPS", "lmp", "lammps", a.skip_lammps, lambda n: run_lammps(spheres, a.dt, n, a.work)),
-            ("YADE", "yade", "yade", a.skip_yade, lambda n: run_yade(packing, a.dt, n, a.work))):
+            ("YADE", "yade", "yade", a.skip_yade, lambda n: run_yade(packing, a.dt, n, a.work, "YADE")),
+            ("YADE exact", "yade", "yade", a.skip_yade,
+             lambda n: run_yade(packing, a.dt, n, a.work, "YADE exact"))):
         if skip:
             continue
         if ensure_installed(binary, package):
@@ -264,14 +296,14 @@ def main():
     median = {c: statistics.median(rate(r) for r in rs) for c, rs in runs.items()}
     print(f"\noedometer loading from {packing}: dt = {a.dt:g} s, {steps} steps, one thread "
           f"(colza --threads {a.threads}), {a.repeat} interleaved round(s)\n")
-    head = (f"{'code':<8} {'particles':>9} {'steps':>7} {'best s':>8} {'Mp-steps/s':>11} {'vs colza':>9} "
+    head = (f"{'code':<10} {'particles':>9} {'steps':>7} {'best s':>8} {'Mp-steps/s':>11} {'vs colza':>9} "
             f"{'median Mp/s':>12} {'vs colza':>9} {'peak MB':>8}")
     print(head)
     print("-" * len(head))
     for c, r in best.items():
         rss = max((x["rss"] for x in runs[c] if x["rss"]), default=None)
         rss_text = f"{rss / 1024:.1f}" if rss else "?"
-        print(f"{c:<8} {r['particles']:>9} {r['steps']:>7} {r['seconds']:>8.2f} {rate(r) / 1e6:>11.2f} "
+        print(f"{c:<10} {r['particles']:>9} {r['steps']:>7} {r['seconds']:>8.2f} {rate(r) / 1e6:>11.2f} "
               f"{rate(r) / rate(best['colza']):>9.3f} {median[c] / 1e6:>12.2f} {median[c] / median['colza']:>9.3f} "
               f"{rss_text:>8}")
     if a.repeat > 1:
