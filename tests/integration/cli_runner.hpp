@@ -1,12 +1,17 @@
 // Helpers to run the colza executable from tests and read its outputs.
 #pragma once
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
+#include <utility>
 
 namespace colza::testing {
 
@@ -38,9 +43,37 @@ inline CliResult run_colza(const std::string& args) {
 
 inline nlohmann::json read_json(const std::filesystem::path& p) { return nlohmann::json::parse(read_file(p)); }
 
-// A fresh empty scratch directory under the system temp dir.
+// Removes the test program's scratch folder when the program ends with every test passed;
+// after a failure the folder stays, for inspection, and its path is printed.
+class ScratchFolderCleanup : public ::testing::EmptyTestEventListener {
+ public:
+  explicit ScratchFolderCleanup(std::filesystem::path folder) : folder_(std::move(folder)) {}
+  void OnTestProgramEnd(const ::testing::UnitTest& unit_test) override {
+    if (unit_test.Passed()) {
+      std::error_code ec;
+      std::filesystem::remove_all(folder_, ec);
+    } else {
+      std::fprintf(stderr, "the failed tests' outputs are kept in %s\n", folder_.c_str());
+    }
+  }
+
+ private:
+  std::filesystem::path folder_;
+};
+
+// <temp>/colza-test-<pid>: this test program's scratch folder, cleaned up at its end.
+inline const std::filesystem::path& scratch_folder() {
+  static const std::filesystem::path folder = [] {
+    auto f = std::filesystem::temp_directory_path() / ("colza-test-" + std::to_string(::getpid()));
+    ::testing::UnitTest::GetInstance()->listeners().Append(new ScratchFolderCleanup(f));  // gtest owns it
+    return f;
+  }();
+  return folder;
+}
+
+// A fresh empty scratch directory in the test program's scratch folder.
 inline std::filesystem::path scratch_dir(const std::string& name) {
-  const auto d = std::filesystem::temp_directory_path() / ("colza-test-" + std::to_string(::getpid())) / name;
+  const auto d = scratch_folder() / name;
   std::filesystem::remove_all(d);
   std::filesystem::create_directories(d.parent_path());
   return d;
