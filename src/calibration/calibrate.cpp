@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "core/concurrent.hpp"
+#include "core/interrupt.hpp"
 #include "io/format_number.hpp"
 
 namespace colza::calibration {
@@ -573,6 +574,7 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
       }
       continue;
     }
+    throw_if_interrupted();  // Ctrl-C between runs, for models that never step (core/interrupt.hpp)
     r.runs.push_back({x, model(x), "refinement", iteration});
     if (opt.on_run) opt.on_run(r.runs.back());
     const std::size_t k = r.runs.size() - 1;

@@ -1,15 +1,19 @@
 // OncePerKey (core/concurrent.hpp): a value is made once per key however many threads ask
-// (and run_concurrently's OpenMP thread counts, at the end)
-// for it at once, and a make that throws is tried again by the next caller.
+// for it at once, and a make that throws is tried again by the next caller. At the end,
+// run_concurrently: its OpenMP thread counts, and no job starts after Ctrl-C.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <atomic>
+#include <csignal>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "core/concurrent.hpp"
+#include "core/interrupt.hpp"
 
 using colza::OncePerKey;
 
@@ -59,3 +63,26 @@ TEST(RunConcurrently, JobsGetTheirThreadCountAndTheCallerKeepsItsOwn) {
   omp_set_num_threads(before);
 }
 #endif
+
+TEST(RunConcurrently, StartsNoJobAfterCtrlC) {
+  // After SIGINT, run_concurrently starts no job and throws Interrupted, so a calibration
+  // whose model never steps (the identity model) stops at the first press, not the second.
+  // In a child process: the handlers and the flag they set last for the whole process.
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    colza::install_interrupt_handlers();
+    std::raise(SIGINT);  // recorded, not fatal
+    std::atomic<int> started{0};
+    try {
+      colza::run_concurrently(4, 2, [&](std::size_t) { ++started; });
+    } catch (const colza::Interrupted& e) {
+      ::_exit(e.signal_number() == SIGINT && started.load() == 0 ? 0 : 1);
+    }
+    ::_exit(2);  // not interrupted
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "1: a job started or the wrong signal; 2: no Interrupted";
+}
