@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <utility>
 #include <toml++/toml.h>
 #include <unistd.h>
 
@@ -30,6 +31,19 @@ namespace {
 // (--runs) may compute the same run at the same time; each writes its own scratch file and
 // the last rename wins with identical content (same fingerprint, same bits).
 std::string process_unique(const std::string& name) { return name + "." + std::to_string(::getpid()); }
+
+// A scratch folder removed when its scope ends, also when the run in it throws or is
+// interrupted (Ctrl-C), so a stopped calibration leaves no half-written run behind.
+struct ScratchFolder {
+  fs::path path;
+  explicit ScratchFolder(fs::path p) : path(std::move(p)) { fs::remove_all(path); }
+  ~ScratchFolder() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+};
 
 // A shear design run's curve at normal stress sigma (Pa): load-<sigma>Pa.csv.
 std::string shear_curve_file_name(double sigma) { return load_label(sigma) + ".csv"; }
@@ -314,12 +328,10 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
       out.commit();
     } else {
       // The curve is written into the staging folder's final place after the summary check.
-      const fs::path tmp = runs_ / process_unique(".tmp-" + fp);
-      fs::remove_all(tmp);
-      outputs = run_oedometer_outputs(c, tmp, wall);
+      const ScratchFolder tmp(runs_ / process_unique(".tmp-" + fp));
+      outputs = run_oedometer_outputs(c, tmp.path, wall);
       OutputStaging out(dir, true);
-      fs::rename(tmp / "curve.csv", out.path("curve.csv"));
-      fs::remove_all(tmp);
+      fs::rename(tmp.path / "curve.csv", out.path("curve.csv"));
       write_json(out.path("summary.json"), summary_of());
       out.commit();
     }
