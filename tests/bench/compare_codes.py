@@ -26,13 +26,15 @@ damping (pair gran/hooke/history with zero viscous damping). YADE's cylinder is 
 cylinder (YADE has no analytic cylinder wall for spheres); LAMMPS uses fix wall/gran
 zcylinder and a moving fix wall/gran/region plane for the piston.
 
-YADE runs twice per round. Row "YADE" is its cheapest linear law (FrictMat, FrictPhys,
-Law2_ScGeom_FrictPhys_CundallStrack) with one Young modulus, so a pair's Kn = E 2 R1 R2 /
-(R1 + R2) is within a few per cent of colza's kn/2, not equal to it. Row "YADE exact" is the
-law the cross-check uses to make YADE compute colza's sphere-sphere law exactly (one
-CohFrictMat per distinct radius with young = Kn / R, Ig2_Sphere_Sphere_ScGeom6D,
-Law2_ScGeom6D_CohFrictPhys_CohesionMoment without bonds; yade-scripts/colza_yade.py). Its
-walls are those of the first row.
+YADE runs twice per round, both times computing colza's sphere-sphere law with colza's
+stiffnesses (one particle material per distinct radius, young = Kn / R: physics.md section
+6). Row "YADE" is YADE's cheapest form of it (FrictMat, Ig2_Sphere_Sphere_ScGeom,
+Law2_ScGeom_FrictPhys_CundallStrack); row "YADE CohFrict" is the form the cross-check uses,
+which also carries bonds, twist and bending (CohFrictMat, Ig2_Sphere_Sphere_ScGeom6D,
+Law2_ScGeom6D_CohFrictPhys_CohesionMoment; yade-scripts/colza_yade.py). The two agree to
+rounding on this packing (velocities 1e-11 m/s apart after 100 steps, where they reach
+9e-3 m/s; session 12 of tests/bench/PERFORMANCE_LOG.md), so row "YADE" is the fair
+comparison; --skip-yade-cohfrict leaves the slower form out.
 
 Neither YADE nor LAMMPS is needed by the build or the tests: this script is run by hand,
 e.g.  python3 tests/bench/compare_codes.py --colza build/src/colza --steps 20000
@@ -170,28 +172,35 @@ def run_lammps(spheres, dt, steps, work):
     return dict(code="LAMMPS", particles=int(m.group(3)), steps=int(m.group(2)), seconds=float(m.group(1)), rss=rss)
 
 
-# YADE's sphere-sphere law per row: (materials and bodies, Ig2 for two spheres, Ip2, Law2).
+# YADE's sphere-sphere law per row (physics.md section 6): both compute colza's unbonded law
+# with colza's stiffnesses, one particle material per distinct radius (young = Kn / R, so
+# that 2 E1 R1 E2 R2 / (E1 R1 + E2 R2) = Kn for every pair; poisson = Ks / Kn).
+#   "YADE": YADE's cheapest form (FrictMat, ScGeom, FrictPhys, CundallStrack).
+#   "YADE CohFrict": the cross-check's form (yade-scripts/colza_yade.py), which also carries
+#   bonds, twist and bending (CohFrictMat, ScGeom6D, CohFrictPhys, CohesionMoment).
+# Each entry: (material constructor and arguments, Ig2 for two spheres, extra Ip2, extra Law2).
 YADE_LAWS = {
-    "YADE": ("""for (x, y, z, r) in spheres:
-    O.bodies.append(sphere((x, y, z), r, material=mat))
-""", "Ig2_Sphere_Sphere_ScGeom()", "", ""),
-    # colza_yade.py (Model.material_for, build_engines): Kn = young R exactly; no bonds here.
-    "YADE exact": (f"""per_radius = {{}}
-for (x, y, z, r) in spheres:
-    if r not in per_radius:
-        per_radius[r] = O.materials.append(CohFrictMat(
-            young={series(KN, KN)!r} / r, poisson={KS / KN!r}, density={DENSITY}, frictionAngle=math.atan({MU}),
-            isCohesive=True, momentRotationLaw=False, alphaKr=0.0, alphaKtw=0.0, etaRoll=-1.0, etaTwist=-1.0,
-            fragile=True))
-    O.bodies.append(sphere((x, y, z), r, material=per_radius[r]))
-""", "Ig2_Sphere_Sphere_ScGeom6D(avoidGranularRatcheting=False)",
+    "YADE": ("FrictMat", "", "Ig2_Sphere_Sphere_ScGeom(avoidGranularRatcheting=False)", "", ""),
+    "YADE CohFrict": (
+        "CohFrictMat", ", isCohesive=True, momentRotationLaw=False, alphaKr=0.0, alphaKtw=0.0, etaRoll=-1.0, "
+        "etaTwist=-1.0, fragile=True", "Ig2_Sphere_Sphere_ScGeom6D(avoidGranularRatcheting=False)",
         "Ip2_CohFrictMat_CohFrictMat_CohFrictPhys(setCohesionNow=False, setCohesionOnNewContacts=False), ",
         "Law2_ScGeom6D_CohFrictPhys_CohesionMoment(useIncrementalForm=False, always_use_moment_law=False), "),
 }
 
 
+def yade_wall_entity(pair, particle):
+    """E_w R for the wall material: YADE gives a sphere-wall pair 2 a b / (a + b) with
+    a = E_s R (= the particle-particle value `particle`) and b = E_w R; solved for the
+    pair value `pair` (colza's series rule), exact at R = r_mean."""
+    return pair * particle / (2.0 * particle - pair)
+
+
 def write_yade(path, packing, dt, steps, law):
-    bodies, ig2_spheres, ip2_spheres, law2_spheres = YADE_LAWS[law]
+    material, material_extra, ig2_spheres, ip2_spheres, law2_spheres = YADE_LAWS[law]
+    kn_pp, ks_pp = series(KN, KN), series(KS, KS)
+    wall_kn = yade_wall_entity(series(KN, KN_W), kn_pp)
+    wall_ks = yade_wall_entity(series(KS, KS_W), ks_pp)
     top_expr = "max(s[2] + s[3] for s in spheres)"
     r_mean = "sum(s[3] for s in spheres) / len(spheres)"
     with open(path, "w") as f:
@@ -204,18 +213,23 @@ for line in open({packing!r}):
         spheres.append(tuple(float(v) for v in line.split()[:4]))
 top = {top_expr}
 r_mean = {r_mean}
-# Ip2_FrictMat_FrictMat_FrictPhys: Kn = 2 E1 R1 E2 R2 / (E1 R1 + E2 R2), Ks = poisson Kn.
-# E = kn_entity / (2 R_mean) gives Kn ~ kn/2 between two particles (colza's series rule).
-E = {KN} / (2.0 * r_mean)
-mat = O.materials.append(FrictMat(young=E, poisson={KS / KN!r}, frictionAngle=math.atan({MU}), density={DENSITY}))
-wmat = O.materials.append(FrictMat(young={KN_W} / (2.0 * r_mean), poisson={KS_W / KN_W!r},
+# Walls: Kn_w, Ks_w exact for a sphere of radius r_mean, within a few per cent for the others.
+# Their friction is min(atan {MU}, atan {MU_W}) = atan {MU}: YADE's Ip2 takes the smaller angle.
+wmat = O.materials.append(FrictMat(young={wall_kn!r} / r_mean, poisson={wall_ks / wall_kn!r},
                                    frictionAngle=math.atan({MU_W}), density=1000.0))
-{bodies}O.bodies.append(wall(0.0, axis=2, sense=1, material=wmat))
+per_radius = {{}}
+for (x, y, z, r) in spheres:
+    if r not in per_radius:
+        per_radius[r] = O.materials.append({material}(young={kn_pp!r} / r, poisson={ks_pp / kn_pp!r},
+                                           density={DENSITY}, frictionAngle=math.atan({MU}){material_extra}))
+    O.bodies.append(sphere((x, y, z), r, material=per_radius[r]))
+O.bodies.append(wall(0.0, axis=2, sense=1, material=wmat))
 piston = wall(top, axis=2, sense=-1, material=wmat)
 piston.state.vel = Vector3(0, 0, -{PISTON_SPEED!r})
 pid = O.bodies.append(piston)
-O.bodies.append(geom.facetCylinder(center=(0, 0, 0.5 * (top + 0.01)), radius={CYL_R}, height=top + 0.01,
-                                   segmentsNumber=48, wallMask=4, material=wmat))
+# A polygon of 48 facets whose flat faces touch the cylinder of radius {CYL_R} (physics.md section 6).
+O.bodies.append(geom.facetCylinder(center=(0, 0, 0.5 * (top + 0.01)), radius={CYL_R} / math.cos(math.pi / 48),
+                                   height=top + 0.01, segmentsNumber=48, wallMask=4, material=wmat))
 O.engines = [
     ForceResetter(),
     InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb(), Bo1_Facet_Aabb()], verletDist={SKIN}),
@@ -256,6 +270,7 @@ def main():
     ap.add_argument("--threads", type=int, default=1, help="colza threads (YADE and LAMMPS run on one)")
     ap.add_argument("--repeat", type=int, default=3, help="interleaved rounds (best and median are reported)")
     ap.add_argument("--skip-yade", action="store_true")
+    ap.add_argument("--skip-yade-cohfrict", action="store_true", help="run YADE in its cheapest form only")
     ap.add_argument("--skip-lammps", action="store_true")
     a = ap.parse_args()
     colza = os.path.abspath(a.colza)
@@ -268,8 +283,8 @@ def main():
     for code, binary, package, skip, runner in (
             ("LAMMPS", "lmp", "lammps", a.skip_lammps, lambda n: run_lammps(spheres, a.dt, n, a.work)),
             ("YADE", "yade", "yade", a.skip_yade, lambda n: run_yade(packing, a.dt, n, a.work, "YADE")),
-            ("YADE exact", "yade", "yade", a.skip_yade,
-             lambda n: run_yade(packing, a.dt, n, a.work, "YADE exact"))):
+            ("YADE CohFrict", "yade", "yade", a.skip_yade or a.skip_yade_cohfrict,
+             lambda n: run_yade(packing, a.dt, n, a.work, "YADE CohFrict"))):
         if skip:
             continue
         if ensure_installed(binary, package):
@@ -296,14 +311,14 @@ def main():
     median = {c: statistics.median(rate(r) for r in rs) for c, rs in runs.items()}
     print(f"\noedometer loading from {packing}: dt = {a.dt:g} s, {steps} steps, one thread "
           f"(colza --threads {a.threads}), {a.repeat} interleaved round(s)\n")
-    head = (f"{'code':<10} {'particles':>9} {'steps':>7} {'best s':>8} {'Mp-steps/s':>11} {'vs colza':>9} "
+    head = (f"{'code':<13} {'particles':>9} {'steps':>7} {'best s':>8} {'Mp-steps/s':>11} {'vs colza':>9} "
             f"{'median Mp/s':>12} {'vs colza':>9} {'peak MB':>8}")
     print(head)
     print("-" * len(head))
     for c, r in best.items():
         rss = max((x["rss"] for x in runs[c] if x["rss"]), default=None)
         rss_text = f"{rss / 1024:.1f}" if rss else "?"
-        print(f"{c:<10} {r['particles']:>9} {r['steps']:>7} {r['seconds']:>8.2f} {rate(r) / 1e6:>11.2f} "
+        print(f"{c:<13} {r['particles']:>9} {r['steps']:>7} {r['seconds']:>8.2f} {rate(r) / 1e6:>11.2f} "
               f"{rate(r) / rate(best['colza']):>9.3f} {median[c] / 1e6:>12.2f} {median[c] / median['colza']:>9.3f} "
               f"{rss_text:>8}")
     if a.repeat > 1:
