@@ -8,9 +8,7 @@
 
 namespace colza {
 
-namespace {
-
-void build_container(World& world, const OedometerSpec& o) {
+void build_oedometer_container(World& world, const OedometerSpec& o) {
   const double radius = 0.5 * o.cylinder_diameter;
   world.walls.push_back(Wall::plane("bottom", Vec3::Zero(), Vec3::UnitZ()));
   // The envelope reaches up through the whole generation volume (the paper generates in
@@ -18,6 +16,15 @@ void build_container(World& world, const OedometerSpec& o) {
   world.walls.push_back(Wall::cylinder("envelope", Vec3::Zero(), Vec3::UnitZ(), radius, 0.0,
                                        std::max(o.generation_height, o.cylinder_height)));
 }
+
+std::size_t add_oedometer_piston(World& world, const OedometerSpec& o, double top) {
+  Wall piston = Wall::plane("piston", Vec3(0.0, 0.0, top), -Vec3::UnitZ());
+  piston.velocity = Vec3(0.0, 0.0, -o.piston_speed);
+  world.walls.push_back(piston);
+  return world.walls.size() - 1;
+}
+
+namespace {
 
 void place_sample(World& world, const RunConfig& c) {
   GenerationRequest req;
@@ -50,7 +57,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   const OedometerSpec& o = c.oedometer;
   Stepper stepper(make_physics(c));
   World world;
-  build_container(world, o);
+  build_oedometer_container(world, o);
 
   // --- preparation: generation and settling ---------------------------------------
   StageClock prep_clock("settling");
@@ -81,10 +88,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   r.packing_height = top;
   const double area = kPi * 0.25 * o.cylinder_diameter * o.cylinder_diameter;
   r.bulk_density = total_mass(world.particles) / (area * top);
-  Wall piston = Wall::plane("piston", Vec3(0.0, 0.0, top), -Vec3::UnitZ());
-  piston.velocity = Vec3(0.0, 0.0, -o.piston_speed);
-  const std::size_t piston_id = world.walls.size();
-  world.walls.push_back(piston);
+  const std::size_t piston_id = add_oedometer_piston(world, o, top);
   stepper.prepare(world);
   if (c.contact.bond_install == BondInstallMoment::kBeforeLoading) r.bonds_installed = install_bonds(world, c.contact.bond_gap);
   r.settled = world.particles;

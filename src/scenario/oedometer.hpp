@@ -36,4 +36,12 @@ struct OedometerResult {
 // Throws ConfigError when the configuration cannot make the sample (e.g. too many spheres).
 OedometerResult run_oedometer(const RunConfig& config, Progress& progress);
 
+// The container: the floor (plane z = 0, facing up) and the envelope (cylinder of diameter
+// cylinder_diameter from z = 0 up through the generation volume).
+void build_oedometer_container(World& world, const OedometerSpec& o);
+
+// The piston: a plane at height `top` (m) facing down, moving down at piston_speed.
+// Returns its wall index.
+std::size_t add_oedometer_piston(World& world, const OedometerSpec& o, double top);
+
 }  // namespace colza

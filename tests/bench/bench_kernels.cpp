@@ -16,6 +16,7 @@
 #include "engine/pair_batch.hpp"
 #include "engine/stepper.hpp"
 #include "io/packing_file.hpp"
+#include "scenario/oedometer.hpp"
 
 using namespace colza;
 
@@ -49,8 +50,9 @@ World packing(std::size_t n) {
 
 // The settled oedometer packing named by the environment variable COLZA_BENCH_PACKING (a
 // packing file, e.g. the one tests/bench/compare_codes.py prepares in
-// /tmp/colza-compare/prep/packing.txt), in its cylinder (radius 50 mm) on the floor, with the
-// piston resting on the top sphere and moving down at 500 mm/min: the benchmark's real
+// /tmp/colza-compare/prep/packing.txt), in the oedometer scenario's container with its
+// piston resting on the top sphere (the paper's defaults: 100 mm cylinder, 500 mm/min): the
+// benchmark's real
 // contact statistics (about 2.2 contacts and 3.1 candidate pairs per particle) instead of the
 // lattice's. Empty world when the variable is unset.
 World oedometer_packing() {
@@ -62,11 +64,9 @@ World oedometer_packing() {
     w.particles.add(s.position, s.radius, 1250.0);
     top = std::max(top, s.position[2] + s.radius);
   }
-  w.walls.push_back(Wall::plane("bottom", Vec3::Zero(), Vec3::UnitZ()));
-  w.walls.push_back(Wall::cylinder("envelope", Vec3::Zero(), Vec3::UnitZ(), 0.05, 0.0, top + 0.01));
-  Wall piston = Wall::plane("piston", Vec3(0.0, 0.0, top), -Vec3::UnitZ());
-  piston.velocity = Vec3(0.0, 0.0, -0.5 / 60.0);
-  w.walls.push_back(piston);
+  const OedometerSpec paper_defaults;
+  build_oedometer_container(w, paper_defaults);
+  add_oedometer_piston(w, paper_defaults, top);
   return w;
 }
 
