@@ -4,9 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "config/run_config.hpp"
 
@@ -33,7 +31,6 @@ ConfigError oedometer_error(const std::string& toml) {
     read_run_config(Scenario::kOedometer, ConfigReader::from_string(toml, "test.toml"));
   });
 }
-
 
 }  // namespace
 

@@ -5,10 +5,7 @@
 // from them. Every test writes small CSVs to its own temp folder.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "analysis/mohr_coulomb.hpp"
 #include "analysis/shear_strength.hpp"
@@ -20,7 +17,6 @@
 
 using namespace colza;
 using namespace colza::calibration;
-namespace fs = std::filesystem;
 
 namespace {
 
