@@ -52,9 +52,8 @@ World packing(std::size_t n) {
 // packing file, e.g. the one tests/bench/compare_codes.py prepares in
 // /tmp/colza-compare/prep/packing.txt), in the oedometer scenario's container with its
 // piston resting on the top sphere (the paper's defaults: 100 mm cylinder, 500 mm/min): the
-// benchmark's real
-// contact statistics (about 2.2 contacts and 3.1 candidate pairs per particle) instead of the
-// lattice's. Empty world when the variable is unset.
+// benchmark's real contact statistics (about 2.2 contacts and 3.1 candidate pairs per
+// particle) instead of the lattice's. Empty world when the variable is unset.
 World oedometer_packing() {
   World w;
   const char* file = std::getenv("COLZA_BENCH_PACKING");
@@ -216,10 +215,6 @@ void BM_Integrate(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
-}  // namespace
-
-BENCHMARK(BM_ContactKernel)->ArgsProduct({{2287, 9805}, {1, 2}})->UseRealTime();
-BENCHMARK(BM_FullStep)->ArgsProduct({{2287, 9805}, {1, 2}})->UseRealTime();
 // The motion alone (integrate_motion, one thread, no sums), as the oedometer loading and the
 // shear stages run it inside the force loop; items = particles.
 void BM_IntegrateMotion(benchmark::State& state) {
@@ -232,6 +227,11 @@ void BM_IntegrateMotion(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
+
+}  // namespace
+
+BENCHMARK(BM_ContactKernel)->ArgsProduct({{2287, 9805}, {1, 2}})->UseRealTime();
+BENCHMARK(BM_FullStep)->ArgsProduct({{2287, 9805}, {1, 2}})->UseRealTime();
 BENCHMARK(BM_OedometerForces)->ArgsProduct({{0}, {1, 2}})->UseRealTime();
 BENCHMARK(BM_OedometerStep)->ArgsProduct({{0}, {1, 2}})->UseRealTime();
 BENCHMARK(BM_OedometerLaneArithmetic);
