@@ -15,8 +15,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 
 #include "calibration/calibrate.hpp"
 #include "calibration/spec.hpp"
@@ -227,14 +225,13 @@ TEST(CalibrationScatter, ReplicatesNeedAModelWithOtherRealisationsAndTwoOfThem) 
 TEST(CalibrationScatter, SpecKeyReplicates) {
   const colza::testing::ScratchDir dir;
   auto spec_with = [&](const std::string& scatter) {
-    const auto file = dir / "spec.toml";
-    std::ofstream(file) << "stage = \"shear\"\n[model]\nconfig = \"" COLZA_SOURCE_DIR "/tests/data/small_shear.toml\"\n"
-                           "[[parameters]]\nname = \"Cn\"\nkey = \"contact.contact_bond.normal_strength\"\n"
-                           "design = [0.5, 1.5, 2.5]\n[[parameters]]\nname = \"Cs\"\n"
-                           "key = \"contact.contact_bond.shear_strength\"\ndesign = [3.0, 2.0, 3.0]\n"
-                           "[measured]\nresults = \"" COLZA_SOURCE_DIR "/data/measured/shear_strength_paper_line.csv\"\n"
-                           "cohesion_uncertainty = 500.0\ntan_phi_uncertainty = 0.02\n" + scatter;
-    return file.string();
+    return dir.write("spec.toml",
+                     "stage = \"shear\"\n[model]\nconfig = \"" COLZA_SOURCE_DIR "/tests/data/small_shear.toml\"\n"
+                     "[[parameters]]\nname = \"Cn\"\nkey = \"contact.contact_bond.normal_strength\"\n"
+                     "design = [0.5, 1.5, 2.5]\n[[parameters]]\nname = \"Cs\"\n"
+                     "key = \"contact.contact_bond.shear_strength\"\ndesign = [3.0, 2.0, 3.0]\n"
+                     "[measured]\nresults = \"" COLZA_SOURCE_DIR "/data/measured/shear_strength_paper_line.csv\"\n"
+                     "cohesion_uncertainty = 500.0\ntan_phi_uncertainty = 0.02\n" + scatter);
   };
   auto error = [&](const std::string& scatter) -> std::string {
     try {
