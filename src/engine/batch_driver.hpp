@@ -1,7 +1,7 @@
 // The loop shared by the batched kernels (engine/pair_batch.hpp, engine/wall_batch.hpp):
 // pairs [begin, end) in chunks of Batch::kLanes pairs. The pairs of a chunk that were touching
-// at the start of the step go into lanes (`load(c)`), the lanes are computed (`compute()`),
-// then every pair of the chunk is consumed in pair order: a lane that keeps its state by
+// at the start of the step go into lanes (`load(c)`), the lanes are filled with their state
+// and computed (`compute()`), then every pair of the chunk is consumed in pair order: a lane that keeps its state by
 // `steady(c, l)`, any other pair (not touching at the start of the step, or changing state)
 // by `scalar(c)`, the scalar function from the untouched history. Pair order is what keeps
 // every sum the reference loop's.
@@ -37,20 +37,7 @@ template <class Batch, class Load, class Compute, class Steady, class Scalar>
   }
 }
 
-// Opens the next lane of the batch for pair c with its history (stored shear force, previous
-// normal); returns the lane. The kernel's load function adds the bodies' state.
-template <class Batch>
-[[gnu::always_inline]] inline int open_lane(Batch& b, std::size_t c, const ContactHistory& h) {
-  const int l = b.count++;
-  b.pair[l] = c;
-  for (int d = 0; d < 3; ++d) {
-    b.fs[d][l] = h.shear_force[d];
-    b.prev_normal[d][l] = h.normal[d];
-  }
-  return l;
-}
-
-// A steady lane's new history: shear force, normal, Fn (the counterpart of open_lane).
+// A steady lane's new history: shear force, normal, Fn.
 template <class Batch>
 [[gnu::always_inline]] inline void keep_lane_history(ContactHistory& h, const Batch& b, int l) {
   h.shear_force = Vec3(b.fs_new[0][l], b.fs_new[1][l], b.fs_new[2][l]);

@@ -20,8 +20,10 @@
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
+#include <vector>
 #include "engine/batch_driver.hpp"
 #include "engine/lane_law.hpp"
+#include "engine/lane_transpose.hpp"
 #include "engine/pair_force.hpp"
 
 namespace colza::detail {
@@ -30,13 +32,14 @@ template <class Normal, class Tangential>
 inline constexpr bool kHasBatchedKernel =
     std::is_same_v<Normal, LinearNormal> && std::is_same_v<Tangential, CoulombTangential>;
 
-// Inputs and outputs of up to kLanes steady contacts, one array per component. The body
-// states are copied in by `load_lane` (explicit scalar gathers: GCC 12 does not emit
-// gather instructions for this loop).
+// Inputs and outputs of up to kLanes steady contacts, one array per component. `load_lane`
+// notes a contact's pair, bodies and radii; `fill_lanes` then copies the bodies' states and
+// the histories of all the batch's lanes (engine/lane_transpose.hpp).
 struct PairBatch {
   static constexpr int kLanes = 32;
   int count = 0;
-  std::size_t pair[kLanes];  // candidate-pair index of each lane, increasing
+  std::size_t pair[kLanes];       // candidate-pair index of each lane, increasing
+  Index body_i[kLanes], body_j[kLanes];  // its bodies 1 and 2
   // inputs: body states and history (previous shear force and normal)
   alignas(64) double xi[3][kLanes], xj[3][kLanes], vi[3][kLanes], vj[3][kLanes], wi[3][kLanes], wj[3][kLanes];
   alignas(64) double ri[kLanes], rj[kLanes], bonded[kLanes];
@@ -50,21 +53,42 @@ struct PairBatch {
 // Loads contact c (touching at the start of the step) into the next lane.
 inline void load_lane(PairBatch& b, const ParticleArrays& p, std::size_t c, Index i, Index j,
                       const ContactHistory& h) {
-  const int l = open_lane(b, c, h);
-  const Vec3 &xi = p.position[i], &xj = p.position[j];
-  const Vec3 &vi = p.velocity[i], &vj = p.velocity[j];
-  const Vec3 &wi = p.angular_velocity[i], &wj = p.angular_velocity[j];
-  for (int d = 0; d < 3; ++d) {
-    b.xi[d][l] = xi[d];
-    b.xj[d][l] = xj[d];
-    b.vi[d][l] = vi[d];
-    b.vj[d][l] = vj[d];
-    b.wi[d][l] = wi[d];
-    b.wj[d][l] = wj[d];
-  }
+  const int l = b.count++;
+  b.pair[l] = c;
+  b.body_i[l] = i;
+  b.body_j[l] = j;
   b.ri[l] = p.radius[i];
   b.rj[l] = p.radius[j];
   b.bonded[l] = h.bonded ? 1.0 : 0.0;
+}
+
+// The loaded lanes' body states (positions, velocities, angular velocities of bodies 1 and 2)
+// and histories (stored shear force, previous normal), four lanes at a time.
+inline void fill_lanes(PairBatch& b, const ParticleArrays& p, const ContactHistory* history) {
+  const int count = b.count;
+  for (int l = count; l < whole_lane_groups(count); ++l) {
+    b.pair[l] = b.pair[0];
+    b.body_i[l] = b.body_i[0];
+    b.body_j[l] = b.body_j[0];
+  }
+  const auto from_bodies = [&](const std::vector<Vec3>& state, const Index* body, double(&dst)[3][PairBatch::kLanes],
+                               int l) {
+    rows_to_lanes(state[body[l]].data(), state[body[l + 1]].data(), state[body[l + 2]].data(),
+                  state[body[l + 3]].data(), dst, l);
+  };
+  for (int l = 0; l < count; l += kLaneGroup) {
+    from_bodies(p.position, b.body_i, b.xi, l);
+    from_bodies(p.position, b.body_j, b.xj, l);
+    from_bodies(p.velocity, b.body_i, b.vi, l);
+    from_bodies(p.velocity, b.body_j, b.vj, l);
+    from_bodies(p.angular_velocity, b.body_i, b.wi, l);
+    from_bodies(p.angular_velocity, b.body_j, b.wj, l);
+    const ContactHistory &h0 = history[b.pair[l]], &h1 = history[b.pair[l + 1]], &h2 = history[b.pair[l + 2]],
+                         &h3 = history[b.pair[l + 3]];
+    rows_to_lanes(h0.shear_force.data(), h1.shear_force.data(), h2.shear_force.data(), h3.shear_force.data(), b.fs,
+                  l);
+    rows_to_lanes(h0.normal.data(), h1.normal.data(), h2.normal.data(), h3.normal.data(), b.prev_normal, l);
+  }
 }
 
 // The law for every lane (physics.md section 2, steps 1-6, for a contact that existed at the
@@ -138,7 +162,10 @@ template <class Normal, class Tangential, class Bond, class Out, class Sink>
   PairBatch b;
   run_in_batches(
       b, history, begin, end, [&](std::size_t c) { load_lane(b, p, c, first[c], second[c], history[c]); },
-      [&] { compute_lanes<Bond, Sink::kKeepsSlip>(b, bond_law, q, dt, half_dt); },
+      [&] {
+        fill_lanes(b, p, history);
+        compute_lanes<Bond, Sink::kKeepsSlip>(b, bond_law, q, dt, half_dt);
+      },
       [&](std::size_t k, int l) {  // steady contact: the lane's result
         keep_lane_history(history[k], b, l);
         sink.slip(b.slip[l]);

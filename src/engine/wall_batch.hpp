@@ -17,8 +17,10 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <vector>
 #include "engine/batch_driver.hpp"
 #include "engine/lane_law.hpp"
+#include "engine/lane_transpose.hpp"
 #include "engine/wall_pair_force.hpp"
 
 namespace colza::detail {
@@ -27,6 +29,7 @@ struct WallBatch {
   static constexpr int kLanes = 32;
   int count = 0;
   std::size_t pair[kLanes];  // wall-pair index of each lane, increasing
+  Index sphere[kLanes];      // its sphere
   // inputs: the sphere's state and the history
   alignas(64) double x[3][kLanes], v[3][kLanes], w[3][kLanes], r[kLanes];
   alignas(64) double fs[3][kLanes], prev_normal[3][kLanes];
@@ -35,15 +38,36 @@ struct WallBatch {
   alignas(64) double slip[kLanes], fallback[kLanes];
 };
 
-inline void load_wall_lane(WallBatch& b, const ParticleArrays& p, std::size_t c, Index i, const ContactHistory& h) {
-  const int l = open_lane(b, c, h);
-  const Vec3 &x = p.position[i], &v = p.velocity[i], &w = p.angular_velocity[i];
-  for (int d = 0; d < 3; ++d) {
-    b.x[d][l] = x[d];
-    b.v[d][l] = v[d];
-    b.w[d][l] = w[d];
-  }
+// Loads wall pair c (touching at the start of the step) into the next lane.
+inline void load_wall_lane(WallBatch& b, const ParticleArrays& p, std::size_t c, Index i) {
+  const int l = b.count++;
+  b.pair[l] = c;
+  b.sphere[l] = i;
   b.r[l] = p.radius[i];
+}
+
+// The loaded lanes' sphere states (position, velocity, angular velocity) and histories
+// (stored shear force, previous normal), four lanes at a time (engine/lane_transpose.hpp).
+inline void fill_wall_lanes(WallBatch& b, const ParticleArrays& p, const ContactHistory* history) {
+  const int count = b.count;
+  for (int l = count; l < whole_lane_groups(count); ++l) {
+    b.pair[l] = b.pair[0];
+    b.sphere[l] = b.sphere[0];
+  }
+  const auto from_spheres = [&](const std::vector<Vec3>& state, double(&dst)[3][WallBatch::kLanes], int l) {
+    rows_to_lanes(state[b.sphere[l]].data(), state[b.sphere[l + 1]].data(), state[b.sphere[l + 2]].data(),
+                  state[b.sphere[l + 3]].data(), dst, l);
+  };
+  for (int l = 0; l < count; l += kLaneGroup) {
+    from_spheres(p.position, b.x, l);
+    from_spheres(p.velocity, b.v, l);
+    from_spheres(p.angular_velocity, b.w, l);
+    const ContactHistory &h0 = history[b.pair[l]], &h1 = history[b.pair[l + 1]], &h2 = history[b.pair[l + 2]],
+                         &h3 = history[b.pair[l + 3]];
+    rows_to_lanes(h0.shear_force.data(), h1.shear_force.data(), h2.shear_force.data(), h3.shear_force.data(), b.fs,
+                  l);
+    rows_to_lanes(h0.normal.data(), h1.normal.data(), h2.normal.data(), h3.normal.data(), b.prev_normal, l);
+  }
 }
 
 // Distance from the sphere centre (x, y, z) to the wall surface and the unit normal from the
@@ -160,8 +184,11 @@ template <class Normal, class Tangential, class Out, class Sink>
   const PairParameters& q = pairs.particle_wall(0, wall.material);
   WallBatch b;
   run_in_batches(
-      b, history, begin, end, [&](std::size_t c) { load_wall_lane(b, p, c, particle[c], history[c]); },
-      [&] { compute_wall_lanes<Sink::kKeepsSlip>(b, wall, q, dt, half_dt); },
+      b, history, begin, end, [&](std::size_t c) { load_wall_lane(b, p, c, particle[c]); },
+      [&] {
+        fill_wall_lanes(b, p, history);
+        compute_wall_lanes<Sink::kKeepsSlip>(b, wall, q, dt, half_dt);
+      },
       [&](std::size_t k, int l) {  // steady contact: the lane's result
         keep_lane_history(history[k], b, l);
         sink.slip(b.slip[l]);

@@ -155,6 +155,7 @@ void BM_OedometerLaneArithmetic(benchmark::State& state) {
     if (batches.back().count == detail::PairBatch::kLanes) batches.emplace_back();
     detail::load_lane(batches.back(), w.particles, c, pp.first[c], pp.second[c], pp.history[c]);
   }
+  for (auto& b : batches) detail::fill_lanes(b, w.particles, pp.history.data());
   const PairParameters& q = stepper.pairs().particle_particle(0, 0);
   const double dt = w.dt;
   std::size_t contacts = 0;
