@@ -1,10 +1,11 @@
-// The loop shared by the batched kernels (engine/pair_batch.hpp, engine/wall_batch.hpp):
-// pairs [begin, end) in chunks of Batch::kLanes pairs. The pairs of a chunk that were touching
-// at the start of the step go into lanes (`load(c)`), the lanes are filled with their state
-// and computed (`compute()`), then every pair of the chunk is consumed in pair order: a lane that keeps its state by
-// `steady(c, l)`, any other pair (not touching at the start of the step, or changing state)
-// by `scalar(c)`, the scalar function from the untouched history. Pair order is what keeps
-// every sum the reference loop's.
+// The loop of the batched wall kernel (engine/wall_batch.hpp), and the pair-order merge
+// that the particle-pair kernel (engine/pair_batch.hpp) uses for its chunks that are not
+// quiet: pairs [begin, end) in chunks of Batch::kLanes pairs. The pairs of a chunk that were
+// touching at the start of the step go into lanes (`load(c)`), the lanes are filled with
+// their state and computed (`compute()`), then every pair of the chunk is consumed in pair
+// order: a lane that keeps its state by `steady(c, l)`, any other pair (not touching at the
+// start of the step, or changing state) by `scalar(c)`, the scalar function from the
+// untouched history. Pair order is what keeps every sum the reference loop's.
 #pragma once
 #include <cstddef>
 #include "contact/history.hpp"
@@ -12,28 +13,36 @@
 
 namespace colza::detail {
 
+// Consumes the pairs [chunk_begin, chunk_end) of a computed batch in pair order: a lane that
+// keeps its state by `steady(c, l)`, any other pair by `scalar(c)`.
+template <class Batch, class Steady, class Scalar>
+[[gnu::always_inline]] inline void consume_in_pair_order(const Batch& b, std::size_t chunk_begin,
+                                                         std::size_t chunk_end, Steady&& steady, Scalar&& scalar) {
+  int l = 0;
+  for (std::size_t k = chunk_begin; k < chunk_end; ++k) {
+    const bool in_lane = l < b.count && b.pair[l] == k;
+    if (in_lane && b.fallback[l] == 0.0) {
+      steady(k, l);
+      ++l;
+      continue;
+    }
+    if (in_lane) ++l;
+    scalar(k);
+  }
+}
+
 template <class Batch, class Load, class Compute, class Steady, class Scalar>
 [[gnu::always_inline]] inline void run_in_batches(Batch& b, const ContactHistory* history, std::size_t begin,
                                                   std::size_t end, Load&& load, Compute&& compute, Steady&& steady,
                                                   Scalar&& scalar) {
   std::size_t c = begin;
   while (c < end) {
-    const std::size_t batch_begin = c;
+    const std::size_t chunk_begin = c;
     b.count = 0;
     for (; c < end && b.count < Batch::kLanes; ++c)
       if (history[c].touching) load(c);
     compute();
-    int l = 0;
-    for (std::size_t k = batch_begin; k < c; ++k) {
-      const bool in_lane = l < b.count && b.pair[l] == k;
-      if (in_lane && b.fallback[l] == 0.0) {
-        steady(k, l);
-        ++l;
-        continue;
-      }
-      if (in_lane) ++l;
-      scalar(k);
-    }
+    consume_in_pair_order(b, chunk_begin, c, steady, scalar);
   }
 }
 

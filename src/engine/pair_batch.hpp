@@ -13,6 +13,13 @@
 // from their untouched history. Results are consumed in pair order, so the per-particle
 // sums are those of the reference loop.
 //
+// Most chunks of pairs are quiet: no lane changes state and no candidate that was not
+// touching overlaps now. Their lanes are then consumed straight in lane order, which is their
+// pair order, and the other candidates carry no force (the scalar function would return at
+// its first test). Filling the chunk and testing it are branch-free; the pair-by-pair merge
+// of lanes and scalar pairs (its branches follow the contact pattern and mispredict) is left
+// to the chunks that are not quiet.
+//
 // Used for the built-in slot combination (LinearNormal, CoulombTangential, NoBond or
 // ContactBond) with one particle material; anything else takes the scalar loop.
 #pragma once
@@ -32,14 +39,18 @@ template <class Normal, class Tangential>
 inline constexpr bool kHasBatchedKernel =
     std::is_same_v<Normal, LinearNormal> && std::is_same_v<Tangential, CoulombTangential>;
 
-// Inputs and outputs of up to kLanes steady contacts, one array per component. `load_lane`
-// notes a contact's pair, bodies and radii; `fill_lanes` then copies the bodies' states and
-// the histories of all the batch's lanes (engine/lane_transpose.hpp).
+// Inputs and outputs of up to kLanes steady contacts, one array per component, and the
+// chunk's other candidates (not touching at the start of the step). `note_lane` records a
+// contact's pair, bodies and radii; `fill_lanes` then copies the bodies' states and the
+// histories of all the batch's lanes (engine/lane_transpose.hpp).
 struct PairBatch {
   static constexpr int kLanes = 32;
-  int count = 0;
-  std::size_t pair[kLanes];       // candidate-pair index of each lane, increasing
+  int count = 0;                         // lanes
+  std::size_t pair[kLanes];              // candidate-pair index of each lane, increasing
   Index body_i[kLanes], body_j[kLanes];  // its bodies 1 and 2
+  int idle = 0;                          // candidates not touching at the start of the step
+  std::size_t idle_pair[kLanes];
+  Index idle_i[kLanes], idle_j[kLanes];
   // inputs: body states and history (previous shear force and normal)
   alignas(64) double xi[3][kLanes], xj[3][kLanes], vi[3][kLanes], vj[3][kLanes], wi[3][kLanes], wj[3][kLanes];
   alignas(64) double ri[kLanes], rj[kLanes], bonded[kLanes];
@@ -50,16 +61,51 @@ struct PairBatch {
   alignas(64) double fallback[kLanes];  // 1: the contact changes state, recompute with the scalar law
 };
 
-// Loads contact c (touching at the start of the step) into the next lane.
-inline void load_lane(PairBatch& b, const ParticleArrays& p, std::size_t c, Index i, Index j,
-                      const ContactHistory& h) {
-  const int l = b.count++;
+// Records candidate pair c (bodies i, j) in lane l.
+[[gnu::always_inline]] inline void note_lane(PairBatch& b, int l, const double* radius, std::size_t c, Index i,
+                                             Index j, const ContactHistory& h) {
   b.pair[l] = c;
   b.body_i[l] = i;
   b.body_j[l] = j;
-  b.ri[l] = p.radius[i];
-  b.rj[l] = p.radius[j];
+  b.ri[l] = radius[i];
+  b.rj[l] = radius[j];
   b.bonded[l] = h.bonded ? 1.0 : 0.0;
+}
+
+// Notes the candidate pairs from c on, until the batch's lanes or idle slots are full or the
+// range ends: a pair touching at the start of the step into the next lane, any other into
+// the idle list. Branch-free: every pair is written to both next slots, and only the slot it
+// belongs to advances. Returns the end of the chunk.
+[[gnu::always_inline]] inline std::size_t note_chunk(PairBatch& b, const double* radius, const Index* first,
+                                                     const Index* second, const ContactHistory* history,
+                                                     std::size_t c, std::size_t end) {
+  int count = 0, idle = 0;
+  for (; c < end && count < PairBatch::kLanes && idle < PairBatch::kLanes; ++c) {
+    const int touching = history[c].touching;
+    note_lane(b, count, radius, c, first[c], second[c], history[c]);
+    b.idle_pair[idle] = c;
+    b.idle_i[idle] = first[c];
+    b.idle_j[idle] = second[c];
+    count += touching;
+    idle += 1 - touching;
+  }
+  b.count = count;
+  b.idle = idle;
+  return c;
+}
+
+// Whether the chunk is quiet: no lane changes state, and no idle candidate overlaps now (the
+// scalar function's first test, dist^2 >= (ri + rj)^2 for no contact, with its operations).
+inline bool quiet_chunk(const PairBatch& b, const ParticleArrays& p) {
+  bool quiet = true;
+  for (int l = 0; l < b.count; ++l) quiet &= b.fallback[l] == 0.0;
+  for (int k = 0; k < b.idle; ++k) {
+    const Index i = b.idle_i[k], j = b.idle_j[k];
+    const V3 d = v3(p.position[j]) - v3(p.position[i]);
+    const double reach = p.radius[i] + p.radius[j];
+    quiet &= dot(d, d) >= reach * reach;
+  }
+  return quiet;
 }
 
 // The loaded lanes' body states (positions, velocities, angular velocities of bodies 1 and 2)
@@ -149,8 +195,9 @@ inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& 
 
 // Particle pairs [begin, end) through the batched kernel. `out.carries(c, i, j, f, t_i, t_j)`
 // receives, in pair order, the force f on body 2 (body 1 gets -f) and the torques
-// t_i = arm_i x f (body 1 gets -t_i) and t_j = arm_j x f; `out.none(c)` a pair without force.
-// Requires one particle material (the caller checks).
+// t_i = arm_i x f (body 1 gets -t_i) and t_j = arm_j x f; `out.none(c)` a pair without force
+// (called, in any order, only when `Out::kNoneWrites`). Requires one particle material (the
+// caller checks).
 template <class Normal, class Tangential, class Bond, class Out, class Sink>
 [[gnu::always_inline]] inline void particle_pairs_batched(const Normal& normal_law, const Tangential& tangential_law,
                                                           const Bond& bond_law, bool bond_new_contacts,
@@ -160,27 +207,35 @@ template <class Normal, class Tangential, class Bond, class Out, class Sink>
                                                           Out& out, Sink& sink) {
   const PairParameters& q = pairs.particle_particle(0, 0);
   PairBatch b;
-  run_in_batches(
-      b, history, begin, end, [&](std::size_t c) { load_lane(b, p, c, first[c], second[c], history[c]); },
-      [&] {
-        fill_lanes(b, p, history);
-        compute_lanes<Bond, Sink::kKeepsSlip>(b, bond_law, q, dt, half_dt);
-      },
-      [&](std::size_t k, int l) {  // steady contact: the lane's result
-        keep_lane_history(history[k], b, l);
-        sink.slip(b.slip[l]);
-        out.carries(k, first[k], second[k], V3{b.f[0][l], b.f[1][l], b.f[2][l]},
-                    V3{b.torque_i[0][l], b.torque_i[1][l], b.torque_i[2][l]},
-                    V3{b.torque_j[0][l], b.torque_j[1][l], b.torque_j[2][l]});
-      },
-      [&](std::size_t k) {  // a new contact if the spheres overlap now, or a change of state
-        V3 f, arm_i, arm_j;
-        if (particle_pair_force(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt,
-                                first[k], second[k], history[k], f, arm_i, arm_j, sink))
-          out.carries(k, first[k], second[k], f, cross(arm_i, f), cross(arm_j, f));
-        else
-          out.none(k);
-      });
+  const auto steady = [&](std::size_t k, int l) {  // steady contact: the lane's result
+    keep_lane_history(history[k], b, l);
+    sink.slip(b.slip[l]);
+    out.carries(k, first[k], second[k], V3{b.f[0][l], b.f[1][l], b.f[2][l]},
+                V3{b.torque_i[0][l], b.torque_i[1][l], b.torque_i[2][l]},
+                V3{b.torque_j[0][l], b.torque_j[1][l], b.torque_j[2][l]});
+  };
+  const auto scalar = [&](std::size_t k) {  // a new contact if the spheres overlap now, or a change of state
+    V3 f, arm_i, arm_j;
+    if (particle_pair_force(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt, first[k],
+                            second[k], history[k], f, arm_i, arm_j, sink))
+      out.carries(k, first[k], second[k], f, cross(arm_i, f), cross(arm_j, f));
+    else
+      out.none(k);
+  };
+  std::size_t c = begin;
+  while (c < end) {
+    const std::size_t chunk_begin = c;
+    c = note_chunk(b, p.radius.data(), first, second, history, c, end);
+    fill_lanes(b, p, history);
+    compute_lanes<Bond, Sink::kKeepsSlip>(b, bond_law, q, dt, half_dt);
+    if (!quiet_chunk(b, p)) {
+      consume_in_pair_order(b, chunk_begin, c, steady, scalar);
+      continue;
+    }
+    for (int l = 0; l < b.count; ++l) steady(b.pair[l], l);
+    if constexpr (Out::kNoneWrites)
+      for (int k = 0; k < b.idle; ++k) out.none(b.idle_pair[k]);
+  }
 }
 
 }  // namespace colza::detail

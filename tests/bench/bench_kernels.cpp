@@ -153,7 +153,8 @@ void BM_OedometerLaneArithmetic(benchmark::State& state) {
   for (std::size_t c = 0; c < pp.size(); ++c) {
     if (!pp.history[c].touching) continue;
     if (batches.back().count == detail::PairBatch::kLanes) batches.emplace_back();
-    detail::load_lane(batches.back(), w.particles, c, pp.first[c], pp.second[c], pp.history[c]);
+    detail::PairBatch& b = batches.back();
+    detail::note_lane(b, b.count++, w.particles.radius.data(), c, pp.first[c], pp.second[c], pp.history[c]);
   }
   for (auto& b : batches) detail::fill_lanes(b, w.particles, pp.history.data());
   const PairParameters& q = stepper.pairs().particle_particle(0, 0);
