@@ -10,6 +10,7 @@
 #include <cstddef>
 #include "contact/history.hpp"
 #include "core/types.hpp"
+#include "engine/lane_transpose.hpp"
 
 namespace colza::detail {
 
@@ -44,6 +45,16 @@ template <class Batch, class Load, class Compute, class Steady, class Scalar>
     compute();
     consume_in_pair_order(b, chunk_begin, c, steady, scalar);
   }
+}
+
+// Lanes l..l+3's histories (stored shear force, previous normal) into the batch, by
+// transposes (engine/lane_transpose.hpp); the counterpart of keep_lane_history.
+template <class Batch>
+[[gnu::always_inline]] inline void histories_to_lanes(Batch& b, const ContactHistory* history, int l) {
+  const ContactHistory &h0 = history[b.pair[l]], &h1 = history[b.pair[l + 1]], &h2 = history[b.pair[l + 2]],
+                       &h3 = history[b.pair[l + 3]];
+  rows_to_lanes(h0.shear_force.data(), h1.shear_force.data(), h2.shear_force.data(), h3.shear_force.data(), b.fs, l);
+  rows_to_lanes(h0.normal.data(), h1.normal.data(), h2.normal.data(), h3.normal.data(), b.prev_normal, l);
 }
 
 // A steady lane's new history: shear force, normal, Fn.

@@ -108,7 +108,7 @@ inline bool quiet_chunk(const PairBatch& b, const ParticleArrays& p) {
   return quiet;
 }
 
-// The loaded lanes' body states (positions, velocities, angular velocities of bodies 1 and 2)
+// The noted lanes' body states (positions, velocities, angular velocities of bodies 1 and 2)
 // and histories (stored shear force, previous normal), four lanes at a time.
 inline void fill_lanes(PairBatch& b, const ParticleArrays& p, const ContactHistory* history) {
   const int count = b.count;
@@ -129,11 +129,7 @@ inline void fill_lanes(PairBatch& b, const ParticleArrays& p, const ContactHisto
     from_bodies(p.velocity, b.body_j, b.vj, l);
     from_bodies(p.angular_velocity, b.body_i, b.wi, l);
     from_bodies(p.angular_velocity, b.body_j, b.wj, l);
-    const ContactHistory &h0 = history[b.pair[l]], &h1 = history[b.pair[l + 1]], &h2 = history[b.pair[l + 2]],
-                         &h3 = history[b.pair[l + 3]];
-    rows_to_lanes(h0.shear_force.data(), h1.shear_force.data(), h2.shear_force.data(), h3.shear_force.data(), b.fs,
-                  l);
-    rows_to_lanes(h0.normal.data(), h1.normal.data(), h2.normal.data(), h3.normal.data(), b.prev_normal, l);
+    histories_to_lanes(b, history, l);
   }
 }
 

@@ -62,11 +62,7 @@ inline void fill_wall_lanes(WallBatch& b, const ParticleArrays& p, const Contact
     from_spheres(p.position, b.x, l);
     from_spheres(p.velocity, b.v, l);
     from_spheres(p.angular_velocity, b.w, l);
-    const ContactHistory &h0 = history[b.pair[l]], &h1 = history[b.pair[l + 1]], &h2 = history[b.pair[l + 2]],
-                         &h3 = history[b.pair[l + 3]];
-    rows_to_lanes(h0.shear_force.data(), h1.shear_force.data(), h2.shear_force.data(), h3.shear_force.data(), b.fs,
-                  l);
-    rows_to_lanes(h0.normal.data(), h1.normal.data(), h2.normal.data(), h3.normal.data(), b.prev_normal, l);
+    histories_to_lanes(b, history, l);
   }
 }
 
