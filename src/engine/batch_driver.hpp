@@ -1,11 +1,12 @@
 // The loop of the batched wall kernel (engine/wall_batch.hpp), and the pair-order merge
-// that the particle-pair kernel (engine/pair_batch.hpp) uses for its chunks that are not
-// quiet: pairs [begin, end) in chunks of Batch::kLanes pairs. The pairs of a chunk that were
-// touching at the start of the step go into lanes (`load(c)`), the lanes are filled with
-// their state and computed (`compute()`), then every pair of the chunk is consumed in pair
-// order: a lane that keeps its state by `steady(c, l)`, any other pair (not touching at the
-// start of the step, or changing state) by `scalar(c)`, the scalar function from the
-// untouched history. Pair order is what keeps every sum the reference loop's.
+// that both batched kernels use (the particle-pair kernel, engine/pair_batch.hpp, only for
+// its chunks that are not quiet, and with chunks of its own). A chunk of pairs [begin, end)
+// ends after Batch::kLanes pairs that were touching at the start of the step (or at `end`):
+// those go into lanes (`load(c)`), the lanes are filled with their state and computed
+// (`compute()`), then every pair of the chunk is consumed in pair order: a lane that keeps
+// its state by `steady(c, l)`, any other pair (not touching at the start of the step, or
+// changing state) by `scalar(c)`, the scalar function from the untouched history. Pair
+// order is what keeps every sum the reference loop's.
 #pragma once
 #include <cstddef>
 #include "contact/history.hpp"

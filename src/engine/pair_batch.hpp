@@ -13,8 +13,8 @@
 // from their untouched history. Results are consumed in pair order, so the per-particle
 // sums are those of the reference loop.
 //
-// Most chunks of pairs are quiet: no lane changes state and no candidate that was not
-// touching overlaps now. Their lanes are then consumed straight in lane order, which is their
+// Most chunks of pairs are quiet: no lane changes state and no candidate that was apart at
+// the start of the step overlaps now. Their lanes are then consumed straight in lane order, which is their
 // pair order, and the other candidates carry no force (the scalar function would return at
 // its first test). Filling the chunk and testing it are branch-free; the pair-by-pair merge
 // of lanes and scalar pairs (its branches follow the contact pattern and mispredict) is left
@@ -23,11 +23,8 @@
 // Used for the built-in slot combination (LinearNormal, CoulombTangential, NoBond or
 // ContactBond) with one particle material; anything else takes the scalar loop.
 #pragma once
-#include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <type_traits>
-#include <vector>
 #include "engine/batch_driver.hpp"
 #include "engine/lane_law.hpp"
 #include "engine/lane_transpose.hpp"
@@ -39,18 +36,19 @@ template <class Normal, class Tangential>
 inline constexpr bool kHasBatchedKernel =
     std::is_same_v<Normal, LinearNormal> && std::is_same_v<Tangential, CoulombTangential>;
 
-// Inputs and outputs of up to kLanes steady contacts, one array per component, and the
-// chunk's other candidates (not touching at the start of the step). `note_lane` records a
-// contact's pair, bodies and radii; `fill_lanes` then copies the bodies' states and the
-// histories of all the batch's lanes (engine/lane_transpose.hpp).
+// Inputs and outputs of up to kLanes contacts (pairs touching at the start of the step), one
+// array per component, and up to kLanes candidates of the same chunk whose spheres were
+// apart. `note_lane` records a contact's pair, bodies, radii and bond flag; `fill_lanes`
+// then copies the bodies' states and the histories of all the batch's lanes
+// (engine/lane_transpose.hpp).
 struct PairBatch {
   static constexpr int kLanes = 32;
   int count = 0;                         // lanes
   std::size_t pair[kLanes];              // candidate-pair index of each lane, increasing
   Index body_i[kLanes], body_j[kLanes];  // its bodies 1 and 2
-  int idle = 0;                          // candidates not touching at the start of the step
-  std::size_t idle_pair[kLanes];
-  Index idle_i[kLanes], idle_j[kLanes];
+  int apart = 0;                         // candidates apart at the start of the step
+  std::size_t apart_pair[kLanes];        // their pair indices, increasing
+  Index apart_i[kLanes], apart_j[kLanes];
   // inputs: body states and history (previous shear force and normal)
   alignas(64) double xi[3][kLanes], xj[3][kLanes], vi[3][kLanes], vj[3][kLanes], wi[3][kLanes], wj[3][kLanes];
   alignas(64) double ri[kLanes], rj[kLanes], bonded[kLanes];
@@ -72,35 +70,37 @@ struct PairBatch {
   b.bonded[l] = h.bonded ? 1.0 : 0.0;
 }
 
-// Notes the candidate pairs from c on, until the batch's lanes or idle slots are full or the
-// range ends: a pair touching at the start of the step into the next lane, any other into
-// the idle list. Branch-free: every pair is written to both next slots, and only the slot it
-// belongs to advances. Returns the end of the chunk.
+// Notes the candidate pairs from c on, until the batch's lanes or its apart list are full
+// (so a chunk has at most 2 kLanes - 1 pairs) or the range ends: a pair touching at the start
+// of the step into the next lane, any other into the apart list. Branch-free: every pair is
+// written to both next slots, and only the slot it belongs to advances. Returns the end of
+// the chunk.
 [[gnu::always_inline]] inline std::size_t note_chunk(PairBatch& b, const double* radius, const Index* first,
                                                      const Index* second, const ContactHistory* history,
                                                      std::size_t c, std::size_t end) {
-  int count = 0, idle = 0;
-  for (; c < end && count < PairBatch::kLanes && idle < PairBatch::kLanes; ++c) {
-    const int touching = history[c].touching;
+  int count = 0, apart = 0;
+  for (; c < end && count < PairBatch::kLanes && apart < PairBatch::kLanes; ++c) {
+    const int touching = history[c].touching != 0;
     note_lane(b, count, radius, c, first[c], second[c], history[c]);
-    b.idle_pair[idle] = c;
-    b.idle_i[idle] = first[c];
-    b.idle_j[idle] = second[c];
+    b.apart_pair[apart] = c;
+    b.apart_i[apart] = first[c];
+    b.apart_j[apart] = second[c];
     count += touching;
-    idle += 1 - touching;
+    apart += 1 - touching;
   }
   b.count = count;
-  b.idle = idle;
+  b.apart = apart;
   return c;
 }
 
-// Whether the chunk is quiet: no lane changes state, and no idle candidate overlaps now (the
-// scalar function's first test, dist^2 >= (ri + rj)^2 for no contact, with its operations).
+// Whether the chunk is quiet: no lane changes state, and no candidate that was apart
+// overlaps now (the scalar function's first test, dist^2 >= (ri + rj)^2 for no contact, with
+// its operations).
 inline bool quiet_chunk(const PairBatch& b, const ParticleArrays& p) {
   bool quiet = true;
   for (int l = 0; l < b.count; ++l) quiet &= b.fallback[l] == 0.0;
-  for (int k = 0; k < b.idle; ++k) {
-    const Index i = b.idle_i[k], j = b.idle_j[k];
+  for (int k = 0; k < b.apart; ++k) {
+    const Index i = b.apart_i[k], j = b.apart_j[k];
     const V3 d = v3(p.position[j]) - v3(p.position[i]);
     const double reach = p.radius[i] + p.radius[j];
     quiet &= dot(d, d) >= reach * reach;
@@ -111,24 +111,14 @@ inline bool quiet_chunk(const PairBatch& b, const ParticleArrays& p) {
 // The noted lanes' body states (positions, velocities, angular velocities of bodies 1 and 2)
 // and histories (stored shear force, previous normal), four lanes at a time.
 inline void fill_lanes(PairBatch& b, const ParticleArrays& p, const ContactHistory* history) {
-  const int count = b.count;
-  for (int l = count; l < whole_lane_groups(count); ++l) {
-    b.pair[l] = b.pair[0];
-    b.body_i[l] = b.body_i[0];
-    b.body_j[l] = b.body_j[0];
-  }
-  const auto from_bodies = [&](const std::vector<Vec3>& state, const Index* body, double(&dst)[3][PairBatch::kLanes],
-                               int l) {
-    rows_to_lanes(state[body[l]].data(), state[body[l + 1]].data(), state[body[l + 2]].data(),
-                  state[body[l + 3]].data(), dst, l);
-  };
-  for (int l = 0; l < count; l += kLaneGroup) {
-    from_bodies(p.position, b.body_i, b.xi, l);
-    from_bodies(p.position, b.body_j, b.xj, l);
-    from_bodies(p.velocity, b.body_i, b.vi, l);
-    from_bodies(p.velocity, b.body_j, b.vj, l);
-    from_bodies(p.angular_velocity, b.body_i, b.wi, l);
-    from_bodies(p.angular_velocity, b.body_j, b.wj, l);
+  pad_last_lane_group(b.count, b.pair, b.body_i, b.body_j);
+  for (int l = 0; l < b.count; l += kLaneGroup) {
+    bodies_to_lanes(p.position, b.body_i, b.xi, l);
+    bodies_to_lanes(p.position, b.body_j, b.xj, l);
+    bodies_to_lanes(p.velocity, b.body_i, b.vi, l);
+    bodies_to_lanes(p.velocity, b.body_j, b.vj, l);
+    bodies_to_lanes(p.angular_velocity, b.body_i, b.wi, l);
+    bodies_to_lanes(p.angular_velocity, b.body_j, b.wj, l);
     histories_to_lanes(b, history, l);
   }
 }
@@ -191,9 +181,9 @@ inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& 
 
 // Particle pairs [begin, end) through the batched kernel. `out.carries(c, i, j, f, t_i, t_j)`
 // receives, in pair order, the force f on body 2 (body 1 gets -f) and the torques
-// t_i = arm_i x f (body 1 gets -t_i) and t_j = arm_j x f; `out.none(c)` a pair without force
-// (called, in any order, only when `Out::kNoneWrites`). Requires one particle material (the
-// caller checks).
+// t_i = arm_i x f (body 1 gets -t_i) and t_j = arm_j x f; `out.none(c)` each pair without
+// force (in a quiet chunk after the chunk's carrying pairs, so it must touch nothing that
+// carries() adds to). Requires one particle material (the caller checks).
 template <class Normal, class Tangential, class Bond, class Out, class Sink>
 [[gnu::always_inline]] inline void particle_pairs_batched(const Normal& normal_law, const Tangential& tangential_law,
                                                           const Bond& bond_law, bool bond_new_contacts,
@@ -229,8 +219,7 @@ template <class Normal, class Tangential, class Bond, class Out, class Sink>
       continue;
     }
     for (int l = 0; l < b.count; ++l) steady(b.pair[l], l);
-    if constexpr (Out::kNoneWrites)
-      for (int k = 0; k < b.idle; ++k) out.none(b.idle_pair[k]);
+    for (int k = 0; k < b.apart; ++k) out.none(b.apart_pair[k]);
   }
 }
 

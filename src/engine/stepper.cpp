@@ -88,7 +88,6 @@ inline void wall_takes(Wall& wall, const Vec3& f, ForceLoopTotals& totals) {
 // Where a pair's force goes. Serial: straight onto the bodies (body 2 gets +f and +t_j,
 // body 1 gets -f and -t_i). Threaded: ScatterOrStore below.
 struct ScatterToBodies {
-  static constexpr bool kNoneWrites = false;  // none() does nothing
   Vec3* force;
   Vec3* torque;
   void carries(std::size_t, Index i, Index j, const V3& f, const V3& t_i, const V3& t_j) {
@@ -103,7 +102,6 @@ struct ScatterToBodies {
 // boundary body also goes to its slot, from which the boundary body is summed after the
 // barrier (engine/force_partition.hpp).
 struct ScatterOrStore {
-  static constexpr bool kNoneWrites = true;  // none() clears the pair's slot
   Vec3* force;
   Vec3* torque;
   const Index* slot;

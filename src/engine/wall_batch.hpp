@@ -15,9 +15,7 @@
 // their untouched history. Results are consumed in pair order (wall by wall, particle by
 // particle), so every sum is that of the reference loop.
 #pragma once
-#include <algorithm>
 #include <cmath>
-#include <vector>
 #include "engine/batch_driver.hpp"
 #include "engine/lane_law.hpp"
 #include "engine/lane_transpose.hpp"
@@ -38,30 +36,22 @@ struct WallBatch {
   alignas(64) double slip[kLanes], fallback[kLanes];
 };
 
-// Loads wall pair c (touching at the start of the step) into the next lane.
-inline void load_wall_lane(WallBatch& b, const ParticleArrays& p, std::size_t c, Index i) {
+// Records wall pair c (sphere i, touching at the start of the step) in the next lane.
+inline void note_wall_lane(WallBatch& b, const ParticleArrays& p, std::size_t c, Index i) {
   const int l = b.count++;
   b.pair[l] = c;
   b.sphere[l] = i;
   b.r[l] = p.radius[i];
 }
 
-// The loaded lanes' sphere states (position, velocity, angular velocity) and histories
+// The noted lanes' sphere states (position, velocity, angular velocity) and histories
 // (stored shear force, previous normal), four lanes at a time (engine/lane_transpose.hpp).
 inline void fill_wall_lanes(WallBatch& b, const ParticleArrays& p, const ContactHistory* history) {
-  const int count = b.count;
-  for (int l = count; l < whole_lane_groups(count); ++l) {
-    b.pair[l] = b.pair[0];
-    b.sphere[l] = b.sphere[0];
-  }
-  const auto from_spheres = [&](const std::vector<Vec3>& state, double(&dst)[3][WallBatch::kLanes], int l) {
-    rows_to_lanes(state[b.sphere[l]].data(), state[b.sphere[l + 1]].data(), state[b.sphere[l + 2]].data(),
-                  state[b.sphere[l + 3]].data(), dst, l);
-  };
-  for (int l = 0; l < count; l += kLaneGroup) {
-    from_spheres(p.position, b.x, l);
-    from_spheres(p.velocity, b.v, l);
-    from_spheres(p.angular_velocity, b.w, l);
+  pad_last_lane_group(b.count, b.pair, b.sphere);
+  for (int l = 0; l < b.count; l += kLaneGroup) {
+    bodies_to_lanes(p.position, b.sphere, b.x, l);
+    bodies_to_lanes(p.velocity, b.sphere, b.v, l);
+    bodies_to_lanes(p.angular_velocity, b.sphere, b.w, l);
     histories_to_lanes(b, history, l);
   }
 }
@@ -180,7 +170,7 @@ template <class Normal, class Tangential, class Out, class Sink>
   const PairParameters& q = pairs.particle_wall(0, wall.material);
   WallBatch b;
   run_in_batches(
-      b, history, begin, end, [&](std::size_t c) { load_wall_lane(b, p, c, particle[c]); },
+      b, history, begin, end, [&](std::size_t c) { note_wall_lane(b, p, c, particle[c]); },
       [&] {
         fill_wall_lanes(b, p, history);
         compute_wall_lanes<Sink::kKeepsSlip>(b, wall, q, dt, half_dt);

@@ -6,8 +6,9 @@
 //     done inside the force loop (Stepper::set_between_halves).
 // A dense, jostling packing of 1200 spheres in a closed box (several thousand candidate pairs,
 // above the threaded path's threshold of 2048) with friction sliding, contacts forming and separating, bonds
-// holding and breaking, runs 300 steps on each path; positions, velocities, spins and
-// contact histories must be identical to the last bit.
+// holding and breaking, runs 300 steps on each path (also with a wide Verlet skin, where most
+// candidate pairs are apart); positions, velocities, spins and contact histories must be
+// identical to the last bit.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -33,6 +34,7 @@ struct Setup {
   bool bonds = false;
   bool walls_only_between_halves = false;  // no integration sums; motion may go into the threaded force loop
   bool shaped_walls = false;  // a cylinder and a rectangle (face, edge and corner contacts) besides planes
+  double skin = 0.3e-3;       // m; 2.5 mm makes the diagonal lattice neighbours candidates that stay apart
 };
 
 World make_world(const Setup& setup) {
@@ -90,7 +92,7 @@ PhysicsSettings physics(const Setup& setup) {
   s.integrator.gravity = Vec3(0.0, 0.0, -9.81);
   s.time_step.automatic = false;
   s.time_step.fixed_dt = 5e-6;
-  s.skin = 0.3e-3;
+  s.skin = setup.skin;
   return s;
 }
 
@@ -194,6 +196,29 @@ TEST(ForcePaths, BatchedKernelGivesTheScalarReferenceBitsWithBondsBreaking) {
   EXPECT_EQ(batched.broken_shear, reference.broken_shear);
   expect_same_state(batched.world, reference.world);
   expect_same_pair_energies(batched.ledger, reference.ledger);
+}
+
+// With a wide skin most candidate pairs are apart (the diagonal lattice neighbours, 8.2 mm
+// apart for a reach of 6 mm): the particle-pair kernel's quiet chunks then pass over many
+// such pairs (engine/pair_batch.hpp) and the scalar loop tests each of them. Same bits on
+// every path, threads included. (A threaded slot left stale by a quiet chunk that skipped
+// out.none() is caught by TwoThreadsGiveTheOneThreadBitsWithShapedWalls, whose pairs are
+// repartitioned during the run.)
+TEST(ForcePaths, CandidatesApartGiveTheSameBitsOnEveryPath) {
+  const PathRun batched = run_path({.particle_materials = 1, .bonds = true, .skin = 2.5e-3}, 1);
+  const PathRun reference = run_path({.particle_materials = 2, .bonds = true, .skin = 2.5e-3}, 1);
+  const std::size_t pairs = batched.world.contacts.particle_pairs.size();
+  const std::size_t touching = batched.world.contacts.touching_particle_contacts();
+  ASSERT_GT(touching, 1000u);
+  ASSERT_GT(pairs - touching, touching);  // more candidates apart than in contact
+  expect_same_state(batched.world, reference.world);
+  expect_same_pair_energies(batched.ledger, reference.ledger);
+#ifdef _OPENMP
+  const PathRun two = run_path({.particle_materials = 1, .bonds = true, .skin = 2.5e-3}, 2);
+  EXPECT_EQ(two.threaded_steps, 300u);
+  expect_same_state(batched.world, two.world);
+  expect_same_pair_energies(batched.ledger, two.ledger);
+#endif
 }
 
 // The batched wall kernel (engine/wall_batch.hpp) on every wall shape: a rectangle's face,
