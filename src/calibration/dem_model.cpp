@@ -18,6 +18,7 @@
 #include "io/packing_file.hpp"
 #include "io/summary.hpp"
 #include "io/format_number.hpp"
+#include "io/load_label.hpp"
 #include "io/table.hpp"
 #include "scenario/oedometer.hpp"
 

@@ -14,7 +14,7 @@
 #include "analysis/polyfit.hpp"
 #include "config/config_error.hpp"
 #include "io/format_number.hpp"
-#include "scenario/shear_box.hpp"
+#include "io/load_label.hpp"
 
 namespace colza::calibration {
 

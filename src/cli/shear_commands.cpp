@@ -12,6 +12,7 @@
 #include "core/concurrent.hpp"
 #include "io/fingerprint.hpp"
 #include "io/hdf5_writer.hpp"
+#include "io/load_label.hpp"
 #include "io/output_dir.hpp"
 #include "io/packing_file.hpp"
 #include "io/summary.hpp"

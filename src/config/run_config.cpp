@@ -3,9 +3,9 @@
 #include <filesystem>
 
 #include "contact/slot_registry.hpp"
+#include "io/load_label.hpp"
+#include "io/packing_check.hpp"
 #include "io/packing_file.hpp"
-#include "scenario/packing_check.hpp"
-#include "scenario/shear_box.hpp"
 
 namespace colza {
 

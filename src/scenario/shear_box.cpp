@@ -5,7 +5,6 @@
 #include <cstdio>
 
 #include "analysis/shear_strength.hpp"
-#include "io/format_number.hpp"
 #include "io/packing_file.hpp"
 #include "scenario/generation.hpp"
 #include "scenario/plate_servo.hpp"
@@ -110,23 +109,6 @@ std::size_t count_outside(const World& w, const ShearBoxSpec& b, double offset, 
 }
 
 }  // namespace
-
-std::string load_label(double normal_stress) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "load-%.0fPa", normal_stress);
-  return buf;
-}
-
-std::string loads_sharing_a_label(const std::vector<double>& normal_stresses) {
-  for (std::size_t a = 0; a < normal_stresses.size(); ++a)
-    for (std::size_t b = a + 1; b < normal_stresses.size(); ++b)
-      if (load_label(normal_stresses[a]) == load_label(normal_stresses[b]))
-        return "loads " + format_significant(normal_stresses[a], 12) + " and " +
-               format_significant(normal_stresses[b], 12) + " Pa would share the results directory " +
-               load_label(normal_stresses[a]) + " (labels are to the nearest pascal): give each load once, " +
-               "at least 1 Pa apart";
-  return "";
-}
 
 ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, double normal_stress,
                                Progress& progress) {

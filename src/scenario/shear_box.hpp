@@ -4,7 +4,6 @@
 // settled to 1e-3 N and cut at 80 mm; the plate is servo-controlled to hold the normal
 // stress; once it holds, the lower half is pulled in +x at 300 mm/min to 30 mm.
 #pragma once
-#include <string>
 #include <vector>
 #include "config/run_config.hpp"
 #include "io/progress.hpp"
@@ -53,15 +52,6 @@ struct ShearLoadResult {
   ParticleArrays final_state;
   std::uint64_t bonds_broken_tension = 0, bonds_broken_shear = 0;
 };
-
-// The name of one load's results, "load-<sigma>Pa" (sigma in Pa, to the nearest pascal):
-// a series' load directory, a calibration run's load curve (+ ".csv").
-std::string load_label(double normal_stress);
-
-// Why a list of loads cannot be run as one series or calibration, or "" when it can: two
-// loads with the same label would write to one directory (or curve file), so every load
-// must appear once and loads must be at least ~1 Pa apart.
-std::string loads_sharing_a_label(const std::vector<double>& normal_stresses);
 
 ShearLoadResult run_shear_load(const RunConfig& config, const ShearSample& sample, double normal_stress,
                                Progress& progress);

@@ -1,4 +1,4 @@
-// Checks of a settled packing read from a file (scenario/packing_check.hpp): spheres must fit
+// Checks of a settled packing read from a file (io/packing_check.hpp): spheres must fit
 // the container within 10 % of their radius and overlap each other by at most 10 % of the
 // smaller radius; otherwise a ConfigError names the file, the key and the lines.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "config/config_error.hpp"
-#include "scenario/packing_check.hpp"
+#include "io/packing_check.hpp"
 
 using namespace colza;
 

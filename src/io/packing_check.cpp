@@ -1,4 +1,4 @@
-#include "scenario/packing_check.hpp"
+#include "io/packing_check.hpp"
 
 #include <algorithm>
 #include <cmath>
