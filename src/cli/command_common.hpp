@@ -5,8 +5,8 @@
 #include <vector>
 #include "cli/run_commands.hpp"
 #include "config/run_config.hpp"
+#include "core/stage_timing.hpp"
 #include "io/table.hpp"
-#include "scenario/stage_timing.hpp"
 
 namespace colza {
 

@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-#include "scenario/stage_timing.hpp"
+#include "core/stage_timing.hpp"
 
 namespace colza {
 

@@ -7,10 +7,10 @@
 #include <vector>
 #include "analysis/polyfit.hpp"
 #include "config/run_config.hpp"
+#include "core/stage_timing.hpp"
 #include "io/progress.hpp"
 #include "io/table.hpp"
 #include "scenario/settling.hpp"
-#include "scenario/stage_timing.hpp"
 
 namespace colza {
 

@@ -4,9 +4,9 @@
 // checks and by the YADE cross-check (micro scenes, and macro runs from a packing).
 #pragma once
 #include "config/run_config.hpp"
+#include "core/stage_timing.hpp"
 #include "io/progress.hpp"
 #include "io/table.hpp"
-#include "scenario/stage_timing.hpp"
 
 namespace colza {
 

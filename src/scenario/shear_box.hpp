@@ -6,10 +6,10 @@
 #pragma once
 #include <vector>
 #include "config/run_config.hpp"
+#include "core/stage_timing.hpp"
 #include "io/progress.hpp"
 #include "io/table.hpp"
 #include "scenario/settling.hpp"
-#include "scenario/stage_timing.hpp"
 
 namespace colza {
 

@@ -4,6 +4,7 @@
 // runs in one process (--jobs > 1: shear series, calibration) it counts them all.
 #pragma once
 #include <chrono>
+#include <cstdint>
 #include <ctime>
 #include <string>
 #include <vector>
