@@ -93,18 +93,12 @@ struct PairBatch {
   return c;
 }
 
-// Whether the chunk is quiet: no lane changes state, and no candidate that was apart
-// overlaps now (the scalar function's first test, dist^2 >= (ri + rj)^2 for no contact, with
-// its operations).
+// Whether the chunk is quiet: no lane changes state, and every candidate that was apart is
+// still apart (the scalar function's own test, pair_gap in engine/pair_force.hpp).
 inline bool quiet_chunk(const PairBatch& b, const ParticleArrays& p) {
   bool quiet = true;
   for (int l = 0; l < b.count; ++l) quiet &= b.fallback[l] == 0.0;
-  for (int k = 0; k < b.apart; ++k) {
-    const Index i = b.apart_i[k], j = b.apart_j[k];
-    const V3 d = v3(p.position[j]) - v3(p.position[i]);
-    const double reach = p.radius[i] + p.radius[j];
-    quiet &= dot(d, d) >= reach * reach;
-  }
+  for (int k = 0; k < b.apart; ++k) quiet &= pair_gap(p, b.apart_i[k], b.apart_j[k]).apart();
   return quiet;
 }
 

@@ -38,6 +38,20 @@ inline void sub_from(Vec3& acc, const V3& a) {
   acc[2] -= a.z;
 }
 
+// The centre distance of particle pair (i, j) against its reach: d = x_j - x_i (m),
+// dist2 = |d|^2, reach = r_i + r_j (m). The spheres do not overlap when dist2 >= reach^2.
+// The one test of "not in contact" for a pair that was not touching: particle_pair_force
+// and the batched kernel's quiet chunks (engine/pair_batch.hpp) must agree on it bit for bit.
+struct PairGap {
+  V3 d;
+  double dist2, reach;
+  bool apart() const { return dist2 >= reach * reach; }
+};
+inline PairGap pair_gap(const ParticleArrays& p, Index i, Index j) {
+  const V3 d = v3(p.position[j]) - v3(p.position[i]);
+  return {d, dot(d, d), p.radius[i] + p.radius[j]};
+}
+
 // Geometry and contact law of one particle pair (i < j): the arithmetic of the reference
 // force loop, expression for expression. Returns false when the pair carries no force;
 // otherwise f = force on body 2 (j), and arm_i, arm_j the lever arms.
@@ -47,15 +61,13 @@ template <class Normal, class Tangential, class Bond, class Sink>
                                                        const ParticleArrays& p, const PairTable& pairs, double dt,
                                                        double half_dt, Index i, Index j, ContactHistory& h, V3& f,
                                                        V3& arm_i, V3& arm_j, Sink& sink) {
+  const PairGap gap = pair_gap(p, i, j);
+  if (!h.touching && gap.apart()) return false;  // candidate, not in contact
   const V3 xi = v3(p.position[i]), xj = v3(p.position[j]);
-  const V3 d = xj - xi;
-  const double ri = p.radius[i], rj = p.radius[j];
-  const double dist2 = dot(d, d);
-  const double reach = ri + rj;
-  if (!h.touching && dist2 >= reach * reach) return false;  // candidate, not in contact
-  const double dist = std::sqrt(dist2);
-  const V3 n = d / dist;
-  const double overlap = reach - dist;
+  const double ri = p.radius[i];
+  const double dist = std::sqrt(gap.dist2);
+  const V3 n = gap.d / dist;
+  const double overlap = gap.reach - dist;
   const V3 point = xi + (ri - 0.5 * overlap) * n;  // middle of the overlap
   arm_i = point - xi;
   arm_j = point - xj;
