@@ -163,6 +163,20 @@ Wall read_scene_wall(const ConfigNode& t) {
   return w;
 }
 
+// A settled packing named by `key`: its path resolved against the config file's folder, and
+// the file checked before the run starts (missing, malformed, outside its container as
+// `in_container` tells, or not settled: a ConfigError naming the file and the key). The
+// scenario reads the spheres again when it starts (scenario/oedometer.cpp, shear_box.cpp).
+template <class InContainer>
+std::string checked_packing_file(const ConfigReader& reader, const std::string& key, const std::string& file,
+                                 InContainer&& in_container) {
+  const std::string path = resolve_input_path(reader, key, file);
+  const std::vector<PackedSphere> spheres = read_packing(path, key);
+  in_container(spheres, path, key);
+  check_packing_overlaps(spheres, path, key);
+  return path;
+}
+
 SceneSpec read_scene(const ConfigNode& t, const ConfigReader& reader) {
   SceneSpec s;
   s.steps = t.integer("steps", 0, 1);
@@ -220,24 +234,21 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
   if (scenario == Scenario::kOedometer) {
     c.sample = read_sample(root.table("sample"));
     c.oedometer = read_oedometer(root.table("oedometer"), c.particle);
-    if (!c.oedometer.packing_file.empty()) {
-      c.oedometer.packing_file = resolve_input_path(reader, "oedometer.packing_file", c.oedometer.packing_file);
-      // Fail early if missing, malformed, not fitting the cylinder or not settled.
-      const auto spheres = read_packing(c.oedometer.packing_file, "oedometer.packing_file");
-      check_packing_in_cylinder(spheres, 0.5 * c.oedometer.cylinder_diameter, c.oedometer.packing_file,
-                                "oedometer.packing_file");
-      check_packing_overlaps(spheres, c.oedometer.packing_file, "oedometer.packing_file");
-    }
+    if (!c.oedometer.packing_file.empty())
+      c.oedometer.packing_file = checked_packing_file(
+          reader, "oedometer.packing_file", c.oedometer.packing_file,
+          [&](const std::vector<PackedSphere>& spheres, const std::string& path, const std::string& key) {
+            check_packing_in_cylinder(spheres, 0.5 * c.oedometer.cylinder_diameter, path, key);
+          });
   } else if (scenario == Scenario::kShear) {
     c.sample = read_sample(root.table("sample"));
     c.shear_box = read_shear_box(root.table("shear_box"), c.particle);
-    if (!c.shear_box.packing_file.empty()) {
-      c.shear_box.packing_file = resolve_input_path(reader, "shear_box.packing_file", c.shear_box.packing_file);
-      const auto spheres = read_packing(c.shear_box.packing_file, "shear_box.packing_file");
-      check_packing_in_box(spheres, c.shear_box.length, c.shear_box.width, c.shear_box.packing_file,
-                           "shear_box.packing_file");
-      check_packing_overlaps(spheres, c.shear_box.packing_file, "shear_box.packing_file");
-    }
+    if (!c.shear_box.packing_file.empty())
+      c.shear_box.packing_file = checked_packing_file(
+          reader, "shear_box.packing_file", c.shear_box.packing_file,
+          [&](const std::vector<PackedSphere>& spheres, const std::string& path, const std::string& key) {
+            check_packing_in_box(spheres, c.shear_box.length, c.shear_box.width, path, key);
+          });
   } else {
     c.scene = read_scene(root.table("scene"), reader);
     if (c.integration.automatic_time_step && !root.table("integration").has("time_step"))
