@@ -1,0 +1,82 @@
+#include "code_runs.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sys/wait.h>
+
+namespace crosscheck {
+
+namespace {
+
+// Runs a shell command with its output to `log`; returns its exit status (-1 if it did not
+// exit normally).
+int run_logged(const std::string& command, const fs::path& log) {
+  const std::string full = command + " > " + quote(log.string()) + " 2>&1 < /dev/null";
+  const int raw = std::system(full.c_str());
+  return (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
+}
+
+// The last `lines` lines of a log, indented.
+std::string tail_of(const fs::path& log, std::size_t lines = 15) {
+  std::ifstream in(log);
+  std::vector<std::string> all;
+  std::string line;
+  while (std::getline(in, line)) all.push_back(line);
+  std::string out;
+  for (std::size_t i = all.size() > lines ? all.size() - lines : 0; i < all.size(); ++i) out += "    " + all[i] + "\n";
+  return out;
+}
+
+}  // namespace
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+bool yade_available(const std::string& yade) {
+  const std::string cmd = "command -v " + quote(yade) + " > /dev/null 2>&1";
+  return std::system(cmd.c_str()) == 0;
+}
+
+bool CodeRuns::reused(const fs::path& out) const {
+  if (!opt_.reuse || !fs::exists(out / "summary.json")) return false;
+  std::printf("crosscheck: reusing %s\n", out.string().c_str());
+  return true;
+}
+
+bool CodeRuns::run(const std::string& code, const std::string& command, const fs::path& out) const {
+  fs::create_directories(out.parent_path());
+  const fs::path log = out.string() + ".log";
+  const int status = run_logged(command, log);
+  if (status != 0) {
+    std::fprintf(stderr, "crosscheck: %s failed (exit %d): %s\n%s", code.c_str(), status, command.c_str(),
+                 tail_of(log).c_str());
+    return false;
+  }
+  return true;
+}
+
+bool CodeRuns::run_colza(const std::string& scenario, const fs::path& config, const fs::path& out,
+                         const std::vector<std::string>& sets, const std::vector<std::string>& extra) const {
+  if (reused(out)) return true;
+  std::string cmd = quote(opt_.colza.string()) + " run " + scenario + " --config " + quote(config.string()) +
+                    " --out " + quote(out.string()) + " --force --quiet --threads 1";  // as YADE -j 1
+  for (const auto& s : sets) cmd += " --set " + quote(s);
+  for (const auto& e : extra) cmd += " " + quote(e);
+  return run("colza", cmd, out);
+}
+
+bool CodeRuns::run_yade(const std::string& script, const fs::path& config, const fs::path& out,
+                        const std::vector<std::string>& extra) const {
+  if (reused(out)) return true;
+  const fs::path py = opt_.source / "yade-scripts" / script;
+  std::string cmd = quote(opt_.yade) + " -n -j 1 -x " + quote(py.string()) + " " + quote(config.string()) + " " +
+                    quote(out.string());
+  for (const auto& e : extra) cmd += " " + quote(e);
+  return run("yade", cmd, out);
+}
+
+}  // namespace crosscheck

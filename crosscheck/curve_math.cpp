@@ -1,0 +1,62 @@
+#include "curve_math.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace crosscheck {
+
+double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
+  if (xs.empty() || x < xs.front() || x > xs.back()) return std::numeric_limits<double>::quiet_NaN();
+  const auto it = std::lower_bound(xs.begin(), xs.end(), x);
+  const std::size_t i = static_cast<std::size_t>(it - xs.begin());
+  if (i == 0) return ys[0];
+  const double t = (x - xs[i - 1]) / (xs[i] - xs[i - 1]);
+  return ys[i - 1] + t * (ys[i] - ys[i - 1]);
+}
+
+RmsDifference rms_difference(const std::vector<double>& cx, const std::vector<double>& cy,
+                             const std::vector<double>& yx, const std::vector<double>& yy, double lo, double hi) {
+  double sq_diff = 0.0, sq = 0.0, sq_y = 0.0;
+  std::size_t n = 0;
+  for (std::size_t r = 0; r < cx.size(); ++r) {
+    if (!(cx[r] >= lo) || cx[r] > hi) continue;
+    const double fy = interpolate(yx, yy, cx[r]);
+    if (!std::isfinite(fy)) continue;
+    sq_diff += (cy[r] - fy) * (cy[r] - fy);
+    sq += cy[r] * cy[r];
+    sq_y += fy * fy;
+    ++n;
+  }
+  RmsDifference d;
+  d.n = n;
+  d.rms_colza = std::sqrt(sq / std::max<std::size_t>(n, 1));
+  d.rms_yade = std::sqrt(sq_y / std::max<std::size_t>(n, 1));
+  d.relative = (n > 0 && sq > 0) ? std::sqrt(sq_diff / sq) : std::numeric_limits<double>::quiet_NaN();
+  return d;
+}
+
+MaxDifference max_difference(const std::vector<double>& c, const std::vector<double>& y, std::size_t rows) {
+  double num = 0.0, den = 0.0;
+  for (std::size_t r = 0; r < rows; ++r) {
+    num = std::max(num, std::abs(c[r] - y[r]));
+    den = std::max(den, std::abs(c[r]));
+  }
+  return {den, den > 0 ? num / den : 0.0};
+}
+
+std::pair<double, double> mohr_coulomb(const std::vector<double>& sigma, const std::vector<double>& tau) {
+  const double n = static_cast<double>(sigma.size());
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (std::size_t k = 0; k < sigma.size(); ++k) {
+    sx += sigma[k];
+    sy += tau[k];
+    sxx += sigma[k] * sigma[k];
+    sxy += sigma[k] * tau[k];
+  }
+  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  return {(sy - slope * sx) / n, std::atan(slope) * 180.0 / std::numbers::pi};
+}
+
+}  // namespace crosscheck

@@ -1,0 +1,154 @@
+// crosscheck: runs colza and YADE on the same problems and compares them (physics.md
+// section 6; YADE is the independent referee of colza's physics).
+//
+//   crosscheck micro|oedometer|shear|all [--size small|full] [--colza PATH] [--yade PATH]
+//              [--workdir DIR] [--source DIR] [--tolerances FILE] [--reuse] [--loads PA,PA,..]
+//
+//   micro      deterministic 2-3 body scenes (crosscheck/scenes/micro_*.toml) run by
+//              `colza run scene` and yade-scripts/run_scene.py; their time series must agree
+//              to the tolerances of data/crosscheck-tolerances.toml;
+//   oedometer  both codes load the same settled packing (--size small: the committed
+//              208-sphere packing; --size full: the paper's packing, generated first by
+//              `colza run oedometer` with data/oedometer.toml); compares the force-displacement
+//              curves;
+//   shear      both codes run the direct shear box from the same packing (made once by
+//              `colza run shear`; --size small: crosscheck/scenes/shear_small.toml, --size
+//              full: scenes/shear_full.toml, data/shear.toml's geometry); a short
+//              deterministic start must coincide, then per load the shear strength, mean
+//              normal stress and shear-stress curve, and C and Phi of the loads, are compared;
+//   all        micro, the small oedometer and shear (and the full ones with --size full).
+//
+// --reuse: a run whose output directory in --workdir already holds summary.json (both codes
+// write it last) is not run again, so an interrupted full-size cross-check (hours of YADE)
+// continues where it stopped. Only for a workdir made from the same sources and configs.
+// --loads: the shear box runs these normal stresses (Pa) instead of [shear.<size>] loads, e.g.
+// two of the four full-size loads when the others are not finished (C and Phi are then those
+// of the line through the given loads; the table says so).
+//
+// Prints a table (metric, colza, YADE, difference, tolerance, PASS/FAIL) and both codes'
+// speed. Exit code: 0 all passed, 1 something failed, 2 bad usage or a run failed to
+// start, 77 YADE is not installed (CTest SKIP_RETURN_CODE).
+//
+// This file reads the command line and runs the checks; the comparisons are in
+// micro_check.cpp, oedometer_check.cpp and shear_check.cpp (checks.hpp), the runs of both
+// codes in code_runs.cpp, the table in report.cpp.
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <toml++/toml.h>
+#include "checks.hpp"
+#include "code_runs.hpp"
+#include "options.hpp"
+#include "report.hpp"
+#include "speed_tally.hpp"
+
+using namespace crosscheck;
+
+namespace {
+
+int usage(const char* msg) {
+  if (msg) std::fprintf(stderr, "crosscheck: %s\n", msg);
+  std::fprintf(stderr,
+               "usage: crosscheck micro|oedometer|shear|all [--size small|full] [--colza PATH] [--yade PATH]\n"
+               "                  [--workdir DIR] [--source DIR] [--tolerances FILE] [--reuse] [--loads PA,PA,..]\n");
+  return kExitUsage;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options opt;
+#ifdef COLZA_SOURCE_DIR
+  opt.source = COLZA_SOURCE_DIR;
+#endif
+#ifdef COLZA_EXECUTABLE
+  opt.colza = COLZA_EXECUTABLE;
+#endif
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw std::invalid_argument(a + " needs a value");
+      return argv[++i];
+    };
+    try {
+      if (a == "--size") opt.size = value();
+      else if (a == "--colza") opt.colza = value();
+      else if (a == "--yade") opt.yade = value();
+      else if (a == "--workdir") opt.workdir = value();
+      else if (a == "--source") opt.source = value();
+      else if (a == "--tolerances") opt.tolerances = value();
+      else if (a == "--reuse") opt.reuse = true;
+      else if (a == "--loads") {
+        std::stringstream list(value());
+        for (std::string item; std::getline(list, item, ',');) {
+          std::size_t used = 0;
+          double v = 0.0;
+          try {
+            v = std::stod(item, &used);
+          } catch (const std::exception&) {
+            used = 0;
+          }
+          if (used == 0 || used != item.size() || !(v > 0.0)) throw std::invalid_argument("--loads: \"" + item + "\" is not a normal stress > 0 (Pa)");
+          opt.loads.push_back(v);
+        }
+        if (opt.loads.empty()) throw std::invalid_argument("--loads needs at least one normal stress (Pa)");
+      }
+      else if (a == "-h" || a == "--help") return usage(nullptr), 0;
+      else if (!a.empty() && a[0] == '-') return usage(("unknown option " + a).c_str());
+      else if (opt.what.empty()) opt.what = a;
+      else return usage("one command only");
+    } catch (const std::exception& e) {
+      return usage(e.what());
+    }
+  }
+  if (opt.what != "micro" && opt.what != "oedometer" && opt.what != "shear" && opt.what != "all")
+    return usage("command must be micro, oedometer, shear or all");
+  if (opt.size != "small" && opt.size != "full") return usage("--size must be small or full");
+  if (opt.source.empty() || !fs::exists(opt.source / "yade-scripts" / "run_scene.py"))
+    return usage("cannot find the colza source tree (yade-scripts/); give --source");
+  if (opt.colza.empty() || !fs::exists(opt.colza)) return usage("cannot find the colza executable; give --colza");
+  if (opt.tolerances.empty()) opt.tolerances = opt.source / "data" / "crosscheck-tolerances.toml";
+  if (opt.workdir.empty()) opt.workdir = fs::current_path() / "crosscheck-work";
+  opt.colza = fs::absolute(opt.colza);
+  opt.source = fs::absolute(opt.source);
+  opt.workdir = fs::absolute(opt.workdir);
+
+  if (!yade_available(opt.yade)) {
+    std::printf("crosscheck: SKIPPED: YADE is not installed ('%s' is not on PATH); install the Debian package yade\n",
+                opt.yade.c_str());
+    return kExitSkip;
+  }
+  toml::table tol;
+  try {
+    tol = toml::parse_file(opt.tolerances.string());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "crosscheck: cannot read %s: %s\n", opt.tolerances.string().c_str(), e.what());
+    return kExitUsage;
+  }
+  fs::create_directories(opt.workdir);
+  std::printf("crosscheck %s (--size %s): colza %s, YADE '%s', work in %s\n", opt.what.c_str(), opt.size.c_str(),
+              opt.colza.string().c_str(), opt.yade.c_str(), opt.workdir.string().c_str());
+  std::fflush(stdout);
+
+  const CodeRuns runs(opt);
+  SpeedTally speed;
+  const CheckContext ctx{opt, tol, runs, speed};
+  Report report;
+  if (opt.what == "micro" || opt.what == "all") check_micro(ctx, report);
+  if (opt.what == "oedometer") check_oedometer(ctx, report, opt.size);
+  if (opt.what == "all") {
+    check_oedometer(ctx, report, "small");
+    if (opt.size == "full") check_oedometer(ctx, report, "full");
+  }
+  if (opt.what == "shear") check_shear(ctx, report, opt.size);
+  if (opt.what == "all") {
+    check_shear(ctx, report, "small");
+    if (opt.size == "full") check_shear(ctx, report, "full");
+  }
+  std::printf("\n");
+  report.print();
+  speed.print();
+  return report.all_passed() ? 0 : kExitFail;
+}

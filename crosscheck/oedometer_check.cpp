@@ -1,0 +1,132 @@
+// crosscheck oedometer: both codes load the same settled packing (small: the committed
+// 208-sphere packing; full: the paper's packing, made first by `colza run oedometer`) and
+// their force-displacement curves (curve.csv) are compared.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include "checks.hpp"
+#include "curve_math.hpp"
+#include "result_files.hpp"
+
+namespace crosscheck {
+
+namespace {
+
+// The lower force of the oedometer's fit (oedometer.fit_force_min, N) in a config; 150 N,
+// colza's default, if absent.
+double fit_force_min(const fs::path& config) {
+  try {
+    const toml::table t = toml::parse_file(config.string());
+    return t.at_path("oedometer.fit_force_min").value_or(150.0);
+  } catch (...) {
+    return 150.0;
+  }
+}
+
+// Adds the rows of one oedometer comparison: the same start (particles, contacts), the first
+// rows (must coincide), the rms difference of the force over the logged range (from the
+// fit's lower force to the smaller final travel), the force at given travels.
+void compare_curves(Report& report, const std::string& label, const Csv& c, const Csv& y, const toml::table& t,
+                    const nlohmann::json& cs, const nlohmann::json& ys, const fs::path& config) {
+  const auto& cs_ = c.at("piston_displacement");
+  const auto& cf = c.at("piston_force");
+  const auto& ysd = y.at("piston_displacement");
+  const auto& yf = y.at("piston_force");
+  // The same start: identical particle count and contact count at step 0.
+  report.check(label + " particles", cs.value("particles", 0.0), ys.value("particles", 0.0),
+               std::abs(cs.value("particles", 0.0) - ys.value("particles", 0.0)), 0.0, "%.0f");
+  report.check(label + " contacts at the start", c.at("contacts")[0], y.at("contacts")[0],
+               std::abs(c.at("contacts")[0] - y.at("contacts")[0]), 0.0, "%.0f");
+  // Early rows: before chaos amplifies rounding, the curves must coincide.
+  const std::size_t early = static_cast<std::size_t>(t.at_path("early_rows").value_or(10));
+  const MaxDifference start = max_difference(cf, yf, std::min({early, c.rows(), y.rows()}));
+  report.check(label + " force, first " + std::to_string(early) + " rows (max |diff| / max F)", start.max_colza,
+               start.max_colza, start.relative, tol_number(t, "early_relative", 1e-5));
+  // Logged range: from the fit's lower force on, up to the smaller final travel.
+  const double f_min = fit_force_min(config);
+  double s_lo = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t r = 0; r < c.rows(); ++r)
+    if (cf[r] >= f_min) {
+      s_lo = cs_[r];
+      break;
+    }
+  const double s_hi = std::min(cs_.back(), ysd.back());
+  const RmsDifference d = rms_difference(cs_, cf, ysd, yf, s_lo, s_hi);
+  report.check(label + " force rms difference / rms force (" + std::to_string(d.n) + " rows, travel " +
+                   fmt(1e3 * s_lo, "%.2f") + "-" + fmt(1e3 * s_hi, "%.2f") + " mm)",
+               d.rms_colza, d.rms_yade, d.relative, tol_number(t, "rms_relative", 0.05));
+  if (const auto* travels = t.at_path("travels").as_array()) {
+    for (const auto& node : *travels) {
+      const double s = node.value<double>().value_or(0.0);
+      const double fc = interpolate(cs_, cf, s), fy = interpolate(ysd, yf, s);
+      report.check(label + " force at " + fmt(1e3 * s, "%.1f") + " mm travel (N)", fc, fy,
+                   std::abs(fc - fy) / std::abs(fc), tol_number(t, "force_at_relative", 0.1), "%.1f");
+    }
+  }
+  report.info(label + " travel at stop (mm)", fmt(1e3 * cs_.back(), "%.3f"), fmt(1e3 * ysd.back(), "%.3f"),
+              cs.value("stop_reason", std::string("?")) + " / " + ys.value("stop_reason", std::string("?")));
+  if (ys.value("foreign_patch_contacts", 0) != 0)
+    report.fail(label + " YADE cylinder patches", "a patch touched a sphere other than its own");
+}
+
+}  // namespace
+
+void check_oedometer(const CheckContext& ctx, Report& report, const std::string& size) {
+  const std::string base = "oedometer." + size;
+  const toml::table* t = ctx.tol.at_path(base).as_table();
+  if (!t) {
+    report.fail("oedometer " + size, "no [" + base + "] in the tolerances file");
+    return;
+  }
+  fs::path config = ctx.opt.source / t->at_path("config").value_or(std::string());
+  const fs::path work = ctx.opt.workdir / ("oedometer_" + size);
+  fs::create_directories(work);
+  if (size == "full") {
+    // Generate the paper's packing with colza's defaults, then load it with the loading
+    // config (its packing_file is filled in here).
+    const fs::path settle = ctx.opt.source / t->at_path("settle_config").value_or(std::string("data/oedometer.toml"));
+    const fs::path settled = work / "settle";
+    if (!fs::exists(settled / "packing.txt")) {
+      std::printf("crosscheck: generating and settling the full-size packing with colza (%s)...\n",
+                  settle.string().c_str());
+      std::fflush(stdout);
+      if (!ctx.runs.run_colza("oedometer", settle, settled)) {
+        report.fail("oedometer full", "colza could not make the packing");
+        return;
+      }
+    }
+    std::ifstream in(config);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string s = text.str();
+    const std::string marker = "@PACKING@";
+    const auto at = s.find(marker);
+    if (at == std::string::npos) {
+      report.fail("oedometer full", config.string() + " has no packing_file = \"@PACKING@\"");
+      return;
+    }
+    s.replace(at, marker.size(), fs::absolute(settled / "packing.txt").string());
+    config = work / "oedometer_full.toml";
+    std::ofstream(config) << s;
+  }
+  const fs::path c_out = work / "colza", y_out = work / "yade";
+  std::printf("crosscheck: oedometer %s: running colza and YADE...\n", size.c_str());
+  std::fflush(stdout);
+  if (!ctx.runs.run_colza("oedometer", config, c_out) || !ctx.runs.run_yade("run_oedometer.py", config, y_out)) {
+    report.fail("oedometer " + size, "run failed");
+    return;
+  }
+  ctx.speed.add(c_out, y_out, "oedometer " + size);
+  try {
+    compare_curves(report, "oed " + size, read_csv(c_out / "curve.csv"), read_csv(y_out / "curve.csv"), *t,
+                   read_json(c_out / "summary.json"), read_json(y_out / "summary.json"), config);
+  } catch (const std::exception& e) {
+    report.fail("oedometer " + size, e.what());
+  }
+}
+
+}  // namespace crosscheck

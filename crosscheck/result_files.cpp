@@ -1,0 +1,60 @@
+#include "result_files.hpp"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace crosscheck {
+
+const std::vector<double>* Csv::column(const std::string& name) const {
+  for (std::size_t k = 0; k < names.size(); ++k)
+    if (names[k] == name) return &columns[k];
+  return nullptr;
+}
+
+const std::vector<double>& Csv::at(const std::string& name) const {
+  const auto* c = column(name);
+  if (!c) throw std::runtime_error("no column " + name);
+  return *c;
+}
+
+Csv read_csv(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  Csv csv;
+  std::string line;
+  if (!std::getline(in, line)) throw std::runtime_error(file.string() + " is empty");
+  {
+    std::stringstream s(line);
+    std::string name;
+    while (std::getline(s, name, ',')) csv.names.push_back(name);
+  }
+  csv.columns.resize(csv.names.size());
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    std::stringstream s(line);
+    std::string cell;
+    std::size_t k = 0;
+    while (std::getline(s, cell, ',') && k < csv.columns.size()) csv.columns[k++].push_back(std::strtod(cell.c_str(), nullptr));
+    if (k != csv.columns.size()) throw std::runtime_error(file.string() + ": short row");
+  }
+  return csv;
+}
+
+nlohmann::json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) return nlohmann::json::object();
+  try {
+    return nlohmann::json::parse(in);
+  } catch (...) {
+    return nlohmann::json::object();
+  }
+}
+
+double tol_number(const toml::table& t, const std::string& path, double fallback) {
+  const auto v = t.at_path(path).value<double>();
+  return v ? *v : fallback;
+}
+
+}  // namespace crosscheck

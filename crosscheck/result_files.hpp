@@ -1,0 +1,32 @@
+// Reading what the two codes wrote (series.csv, curve.csv, summary.json) and the tolerance
+// table's numbers.
+#pragma once
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <toml++/toml.h>
+#include <vector>
+
+namespace crosscheck {
+
+namespace fs = std::filesystem;
+
+// A CSV file with a header row: one column of numbers per name.
+struct Csv {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> columns;
+  std::size_t rows() const { return columns.empty() ? 0 : columns[0].size(); }
+  const std::vector<double>* column(const std::string& name) const;  // nullptr if absent
+  const std::vector<double>& at(const std::string& name) const;      // throws if absent
+};
+
+// Throws std::runtime_error if the file cannot be read, is empty or has a short row.
+Csv read_csv(const fs::path& file);
+
+// An empty object if the file is missing or not JSON (a run that did not finish).
+nlohmann::json read_json(const fs::path& file);
+
+// The number at `path` (e.g. "micro.floor.force") of a tolerance table, or `fallback`.
+double tol_number(const toml::table& t, const std::string& path, double fallback);
+
+}  // namespace crosscheck

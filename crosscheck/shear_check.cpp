@@ -1,0 +1,231 @@
+// crosscheck shear: the direct shear box. colza makes the sample once (generation, settling
+// and cut: its packing.txt); then, from that packing, (1) a short deterministic run (the
+// stress is not consolidated, shearing starts at once) must coincide in both codes like the
+// micro scenes, and (2) every load of [shear.<size>] runs the full protocol in both codes
+// (servo consolidation, bonds, shearing); the shear strength, the mean normal stress, the
+// shear-stress curve over the strength window and the Mohr-Coulomb C and Phi of the loads are
+// compared.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+#include "checks.hpp"
+#include "curve_math.hpp"
+#include "result_files.hpp"
+
+namespace crosscheck {
+
+namespace {
+
+// One size of the check: [shear.<size>] of the tolerance table, the scene it names and the
+// work folder.
+struct ShearSetting {
+  std::string base;   // "shear.<size>"
+  std::string label;  // "shear <size>"
+  const toml::table& t;
+  fs::path scene, work;
+};
+
+// `doc` written as `name` into the work folder, for both codes.
+fs::path write_config(const ShearSetting& s, const toml::table& doc, const std::string& name) {
+  const fs::path f = s.work / name;
+  std::ofstream o(f);
+  o << "# written by crosscheck from " << s.scene.string() << "\n" << doc << "\n";
+  return f;
+}
+
+// --normal-stress sigma, at full precision.
+std::vector<std::string> normal_stress_argument(double sigma) { return {"--normal-stress", fmt(sigma, "%.17g")}; }
+
+// The normal stresses (Pa) to run: --loads, or [shear.<size>] loads. Empty (a failed row)
+// if neither gives any.
+std::vector<double> loads_to_run(const CheckContext& ctx, const ShearSetting& s, Report& report) {
+  std::vector<double> loads = ctx.opt.loads;
+  if (!loads.empty()) {
+    std::string list;
+    for (double l : loads) list += (list.empty() ? "" : ", ") + fmt(1e-3 * l, "%.2f");
+    report.note(s.label + ": the loads given by --loads (" + list + " kPa), not those of [" + s.base + "]");
+  } else if (const auto* a = s.t.at_path("loads").as_array()) {
+    for (const auto& n : *a) loads.push_back(n.value<double>().value_or(0.0));
+  }
+  if (loads.empty()) report.fail(s.label, "no loads in [" + s.base + "]");
+  return loads;
+}
+
+// The sample's packing file, made once by colza (the load of this run is cut short: it only
+// makes packing.txt); nothing (and a failed row) if colza could not make it.
+std::optional<fs::path> shear_sample(const CheckContext& ctx, const ShearSetting& s, Report& report,
+                                     double first_load) {
+  const fs::path prep = s.work / "sample";
+  if (!fs::exists(prep / "packing.txt")) {
+    std::printf("crosscheck: %s: colza makes the sample (generation, settling, cut)...\n", s.label.c_str());
+    std::fflush(stdout);
+    if (!ctx.runs.run_colza("shear", s.scene, prep,
+                            {"shear_box.consolidation_max_time=1e-9", "shear_box.strength_window_start=0",
+                             "shear_box.strength_window_end=1e-9", "shear_box.shear_displacement=1e-9"},
+                            normal_stress_argument(first_load))) {
+      report.fail(s.label, "colza could not make the sample");
+      return std::nullopt;
+    }
+  }
+  return fs::absolute(prep / "packing.txt");
+}
+
+// Deterministic start: no consolidation (the servo runs 4 steps), shearing at once for
+// early_steps; before chaos sets in the two codes must coincide.
+void compare_deterministic_start(const CheckContext& ctx, const ShearSetting& s, Report& report,
+                                 const toml::table& doc, const std::string& size, double first_load) {
+  const toml::table& box = *doc["shear_box"].as_table();
+  const double dt = doc.at_path("integration.time_step").value_or(0.0);
+  const double speed = box.at_path("shear_speed").value_or(0.005);
+  const double early_steps = tol_number(s.t, "early_steps", 400);
+  const double disp = early_steps * dt * speed;
+  toml::table e = doc;
+  toml::table& eb = *e["shear_box"].as_table();
+  eb.insert_or_assign("consolidation_max_time", 4 * dt);
+  eb.insert_or_assign("shear_displacement", disp);
+  eb.insert_or_assign("strength_window_start", 0.0);
+  eb.insert_or_assign("strength_window_end", disp);
+  eb.insert_or_assign("record_interval", 10);
+  const fs::path econfig = write_config(s, e, "shear_" + size + "_early.toml");
+  const fs::path c_out = s.work / "colza_early", y_out = s.work / "yade_early";
+  const std::vector<std::string> sigma = normal_stress_argument(first_load);
+  std::printf("crosscheck: %s: deterministic start (%g steps)...\n", s.label.c_str(), early_steps);
+  std::fflush(stdout);
+  if (!ctx.runs.run_colza("shear", econfig, c_out, {}, sigma) || !ctx.runs.run_yade("run_shear.py", econfig, y_out, sigma)) {
+    report.fail(s.label + " deterministic start", "run failed");
+    return;
+  }
+  try {
+    const Csv c = read_csv(c_out / "curve.csv"), y = read_csv(y_out / "curve.csv");
+    if (c.rows() != y.rows() || c.rows() == 0) throw std::runtime_error("different numbers of curve rows");
+    for (const char* q : {"shear_stress", "normal_stress"}) {
+      const MaxDifference d = max_difference(c.at(q), y.at(q), c.rows());
+      report.check(s.label + " start, " + q + " (" + std::to_string(c.rows()) + " rows, max |diff| / max)",
+                   d.max_colza, d.max_colza, d.relative, tol_number(s.t, "early_relative", 1e-6));
+    }
+    double dmax = 0.0;
+    for (std::size_t r = 0; r < c.rows(); ++r)
+      for (const char* q : {"contacts", "bonds"}) dmax = std::max(dmax, std::abs(c.at(q)[r] - y.at(q)[r]));
+    report.check(s.label + " start, contacts and bonds (max |diff|)", c.at("contacts").back(), y.at("contacts").back(),
+                 dmax, 0.0, "%.0f");
+  } catch (const std::exception& ex) {
+    report.fail(s.label + " deterministic start", ex.what());
+  }
+}
+
+// One load, full protocol, in both codes: the rows of its comparison, and both codes' shear
+// strengths (Pa) if it ran and was read.
+std::optional<std::pair<double, double>> compare_load(const CheckContext& ctx, const ShearSetting& s,
+                                                      Report& report, const fs::path& config, double sigma,
+                                                      double window_start, double window_end) {
+  const std::string name = "load-" + fmt(sigma, "%.0f") + "Pa";
+  const std::string l = s.label + " " + fmt(1e-3 * sigma, "%.2f") + " kPa";
+  const fs::path c_out = s.work / ("colza_" + name), y_out = s.work / ("yade_" + name);
+  const std::vector<std::string> arg = normal_stress_argument(sigma);
+  std::printf("crosscheck: %s: running colza and YADE...\n", l.c_str());
+  std::fflush(stdout);
+  if (!ctx.runs.run_colza("shear", config, c_out, {}, arg) || !ctx.runs.run_yade("run_shear.py", config, y_out, arg)) {
+    report.fail(l, "run failed");
+    return std::nullopt;
+  }
+  ctx.speed.add(c_out, y_out, s.label);
+  try {
+    const auto cs = read_json(c_out / "summary.json"), ys = read_json(y_out / "summary.json");
+    const Csv c = read_csv(c_out / "curve.csv"), y = read_csv(y_out / "curve.csv");
+    report.check(l + " particles", cs.value("particles", 0.0), ys.value("particles", 0.0),
+                 std::abs(cs.value("particles", 0.0) - ys.value("particles", 0.0)), 0.0, "%.0f");
+    const bool both = cs.value("consolidated", false) && ys.value("consolidated", false);
+    report.add(Row{l + " consolidated", cs.value("consolidated", false) ? "yes" : "no",
+                   ys.value("consolidated", false) ? "yes" : "no", "-", "both", both, false});
+    report.info(l + " consolidation time (s)", fmt(cs.value("consolidation_time", 0.0)),
+                fmt(ys.value("consolidation_time", 0.0)), "chaotic, not compared");
+    const double c_tau = cs.value("shear_strength", 0.0), y_tau = ys.value("shear_strength", 0.0);
+    report.check(l + " shear strength (kPa)", 1e-3 * c_tau, 1e-3 * y_tau, std::abs(c_tau - y_tau) / std::abs(c_tau),
+                 tol_number(s.t, "strength_relative", 0.1), "%.3f");
+    const double c_sig = cs.value("mean_normal_stress", 0.0), y_sig = ys.value("mean_normal_stress", 0.0);
+    report.check(l + " mean normal stress (kPa)", 1e-3 * c_sig, 1e-3 * y_sig, std::abs(c_sig - y_sig) / std::abs(c_sig),
+                 tol_number(s.t, "normal_stress_relative", 0.01), "%.3f");
+    // shear stress over the strength window, YADE interpolated at colza's offsets
+    const RmsDifference d = rms_difference(c.at("shear_displacement"), c.at("shear_stress"),
+                                           y.at("shear_displacement"), y.at("shear_stress"), window_start, window_end);
+    report.check(l + " shear stress rms difference / rms (" + std::to_string(d.n) + " rows, " +
+                     fmt(1e3 * window_start, "%.2f") + "-" + fmt(1e3 * window_end, "%.2f") + " mm, kPa)",
+                 1e-3 * d.rms_colza, 1e-3 * d.rms_yade, d.relative, tol_number(s.t, "curve_rms_relative", 0.2));
+    const double c_out_n = cs.value("particles_outside", 0.0), y_out_n = ys.value("particles_outside", 0.0);
+    report.add(Row{l + " particles outside the box", fmt(c_out_n, "%.0f"), fmt(y_out_n, "%.0f"), "-", "0",
+                   c_out_n == 0.0 && y_out_n == 0.0, false});
+    return std::make_pair(c_tau, y_tau);
+  } catch (const std::exception& e) {
+    report.fail(l, e.what());
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+void check_shear(const CheckContext& ctx, Report& report, const std::string& size) {
+  const std::string base = "shear." + size;
+  const toml::table* t = ctx.tol.at_path(base).as_table();
+  if (!t) {
+    report.fail("shear " + size, "no [" + base + "] in the tolerances file");
+    return;
+  }
+  const ShearSetting s{base, "shear " + size, *t, ctx.opt.source / t->at_path("config").value_or(std::string()),
+                       ctx.opt.workdir / ("shear_" + size)};
+  fs::create_directories(s.work);
+  toml::table doc;
+  try {
+    doc = toml::parse_file(s.scene.string());
+  } catch (const std::exception& e) {
+    report.fail(s.label, "cannot read " + s.scene.string() + ": " + e.what());
+    return;
+  }
+  toml::table* box = doc["shear_box"].as_table();
+  if (!box) {
+    report.fail(s.label, s.scene.string() + " has no [shear_box]");
+    return;
+  }
+  const std::vector<double> loads = loads_to_run(ctx, s, report);
+  if (loads.empty()) return;
+  // 1. The sample.
+  const std::optional<fs::path> packing = shear_sample(ctx, s, report, loads[0]);
+  if (!packing) return;
+  box->insert_or_assign("packing_file", packing->string());
+  // The tolerances table may shorten the shearing (a YADE load of the full box to 30 mm
+  // takes hours): these keys replace the scene's and are printed with the table.
+  for (const char* key : {"shear_displacement", "strength_window_start", "strength_window_end"})
+    if (const auto v = t->at_path(key).value<double>()) {
+      box->insert_or_assign(key, *v);
+      std::printf("crosscheck: %s: shear_box.%s = %g (from [%s])\n", s.label.c_str(), key, *v, base.c_str());
+    }
+  const fs::path config = write_config(s, doc, "shear_" + size + ".toml");
+  const double window_start = box->at_path("strength_window_start").value_or(0.020);
+  const double window_end = box->at_path("strength_window_end").value_or(0.030);
+
+  // 2. Deterministic start.
+  compare_deterministic_start(ctx, s, report, doc, size, loads[0]);
+
+  // 3. The loads, full protocol.
+  std::vector<double> c_strength, y_strength;
+  for (double sigma : loads)
+    if (const auto strengths = compare_load(ctx, s, report, config, sigma, window_start, window_end)) {
+      c_strength.push_back(strengths->first);
+      y_strength.push_back(strengths->second);
+    }
+  // 4. Mohr-Coulomb line through (nominal load, strength), as colza's shear-series.
+  if (c_strength.size() == loads.size() && loads.size() >= 2) {
+    const auto [cc, cphi] = mohr_coulomb(loads, c_strength);
+    const auto [yc, yphi] = mohr_coulomb(loads, y_strength);
+    report.check(s.label + " cohesion C (kPa)", 1e-3 * cc, 1e-3 * yc, 1e-3 * std::abs(cc - yc),
+                 tol_number(*t, "cohesion_absolute_kpa", 5.0), "%.3f");
+    report.check(s.label + " friction angle Phi (deg)", cphi, yphi, std::abs(cphi - yphi),
+                 tol_number(*t, "friction_angle_absolute_deg", 5.0), "%.2f");
+  }
+}
+
+}  // namespace crosscheck
