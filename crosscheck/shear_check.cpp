@@ -5,6 +5,7 @@
 // (servo consolidation, bonds, shearing); the shear strength, the mean normal stress, the
 // shear-stress curve over the strength window and the Mohr-Coulomb C and Phi of the loads are
 // compared.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
