@@ -1,5 +1,6 @@
 // The arithmetic of comparing curves: linear interpolation, the rms difference of two
-// curves over a range, and the Mohr-Coulomb line through (normal stress, shear strength).
+// curves over a range, the largest difference over their first rows, and the Mohr-Coulomb
+// line through (normal stress, shear strength).
 #pragma once
 #include <cstddef>
 #include <utility>
@@ -11,8 +12,9 @@ namespace crosscheck {
 double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x);
 
 // Curve c (cx, cy) against curve y (yx, yy), at c's points with lo <= cx <= hi where y is
-// defined (y interpolated there): n points, each curve's rms value there, and
-// relative = sqrt(sum (cy - y)^2 / sum cy^2) (NaN without points).
+// defined (y interpolated there; a NaN bound or abscissa takes no point): n points, each
+// curve's rms value there, and relative = sqrt(sum (cy - y)^2 / sum cy^2) (NaN without
+// points).
 struct RmsDifference {
   std::size_t n = 0;
   double rms_colza = 0.0, rms_yade = 0.0, relative = 0.0;

@@ -9,7 +9,7 @@ namespace crosscheck {
 namespace fs = std::filesystem;
 
 inline constexpr int kExitFail = 1;   // a comparison failed
-inline constexpr int kExitUsage = 2;  // bad usage, or a run could not start
+inline constexpr int kExitUsage = 2;  // bad usage, or an unreadable tolerance file
 inline constexpr int kExitSkip = 77;  // YADE is not installed (CTest SKIP_RETURN_CODE)
 
 struct Options {

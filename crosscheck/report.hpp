@@ -2,6 +2,7 @@
 // tolerance, PASS/FAIL), informational rows without a verdict, and notes.
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace crosscheck {

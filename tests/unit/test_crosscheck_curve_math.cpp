@@ -5,7 +5,7 @@
 #include <numbers>
 #include <vector>
 
-#include "curve_math.hpp"
+#include "crosscheck/curve_math.hpp"
 
 namespace {
 
@@ -25,7 +25,7 @@ TEST(CrosscheckCurveMath, InterpolatesLinearlyInsideAndGivesNaNOutside) {
   EXPECT_TRUE(std::isnan(interpolate({}, {}, 0.0)));
 }
 
-// colza (1, 2, 3, 4) at x = 0..3 against YADE y = x + 1 shifted by 1 (2, 3, 4, 5 at the same
+// colza c = x + 1 (1, 2, 3, 4 at x = 0..3) against YADE y = x + 2 (2, 3, 4, 5 at the same
 // x): inside [1, 3] the points x = 1, 2, 3 with colza 2, 3, 4 and YADE 3, 4, 5, so
 // relative = sqrt(3 / (4 + 9 + 16)), rms colza = sqrt(29 / 3), rms YADE = sqrt(50 / 3).
 TEST(CrosscheckCurveMath, RmsDifferenceOverTheRange) {
@@ -43,6 +43,7 @@ TEST(CrosscheckCurveMath, RmsDifferenceSkipsWhereYadeIsNotDefinedAndIsNaNWithout
   EXPECT_EQ(rms_difference(cx, cy, yx, yy, 0.0, 2.0).n, 1u);  // only x = 1 lies in [0.5, 1.5]
   EXPECT_TRUE(std::isnan(rms_difference(cx, cy, yx, yy, 5.0, 6.0).relative));
   EXPECT_TRUE(std::isnan(rms_difference(cx, cy, yx, yy, std::nan(""), 2.0).relative));  // no lower bound found
+  EXPECT_EQ(rms_difference({std::nan(""), 1.0}, {1.0, 1.0}, yx, yy, 0.0, 2.0).n, 1u);  // a NaN abscissa takes no point
 }
 
 TEST(CrosscheckCurveMath, MaxDifferenceOverTheFirstRows) {
