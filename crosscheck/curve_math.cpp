@@ -38,12 +38,13 @@ RmsDifference rms_difference(const std::vector<double>& cx, const std::vector<do
 }
 
 MaxDifference max_difference(const std::vector<double>& c, const std::vector<double>& y, std::size_t rows) {
-  double num = 0.0, den = 0.0;
+  double num = 0.0, den = 0.0, max_y = 0.0;
   for (std::size_t r = 0; r < rows; ++r) {
     num = std::max(num, std::abs(c[r] - y[r]));
     den = std::max(den, std::abs(c[r]));
+    max_y = std::max(max_y, std::abs(y[r]));
   }
-  return {den, den > 0 ? num / den : 0.0};
+  return {den, max_y, den > 0 ? num / den : 0.0};
 }
 
 std::pair<double, double> mohr_coulomb(const std::vector<double>& sigma, const std::vector<double>& tau) {

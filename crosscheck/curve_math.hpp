@@ -22,10 +22,10 @@ struct RmsDifference {
 RmsDifference rms_difference(const std::vector<double>& cx, const std::vector<double>& cy,
                              const std::vector<double>& yx, const std::vector<double>& yy, double lo, double hi);
 
-// Over the first `rows` rows of curves c and y, sampled at the same points: max |c| and
-// relative = max |c - y| / max |c| (0 when c is all zero).
+// Over the first `rows` rows of curves c and y, sampled at the same points: max |c|,
+// max |y| and relative = max |c - y| / max |c| (0 when c is all zero).
 struct MaxDifference {
-  double max_colza = 0.0, relative = 0.0;
+  double max_colza = 0.0, max_yade = 0.0, relative = 0.0;
 };
 MaxDifference max_difference(const std::vector<double>& c, const std::vector<double>& y, std::size_t rows);
 

@@ -45,7 +45,7 @@ void compare_curves(Report& report, const std::string& label, const Csv& c, cons
   const std::size_t early = static_cast<std::size_t>(t.at_path("early_rows").value_or(10));
   const MaxDifference start = max_difference(cf, yf, std::min({early, c.rows(), y.rows()}));
   report.check(label + " force, first " + std::to_string(early) + " rows (max |diff| / max F)", start.max_colza,
-               start.max_colza, start.relative, tol_number(t, "early_relative", 1e-5));
+               start.max_yade, start.relative, tol_number(t, "early_relative", 1e-5));
   // Logged range: from the fit's lower force on, up to the smaller final travel.
   const double f_min = fit_force_min(config);
   double s_lo = std::numeric_limits<double>::quiet_NaN();

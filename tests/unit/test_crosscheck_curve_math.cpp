@@ -48,8 +48,10 @@ TEST(CrosscheckCurveMath, RmsDifferenceSkipsWhereYadeIsNotDefinedAndIsNaNWithout
 
 TEST(CrosscheckCurveMath, MaxDifferenceOverTheFirstRows) {
   const std::vector<double> c = {1.0, -4.0, 2.0, 100.0}, y = {1.5, -4.0, 1.0, 0.0};
-  const auto d = max_difference(c, y, 3);  // max |c - y| = 1 (row 2), max |c| = 4 (row 1)
+  const auto d = max_difference(c, y, 3);  // max |c - y| = 1 (row 2), max |c| = 4, max |y| = 4 (row 1)
   EXPECT_DOUBLE_EQ(d.max_colza, 4.0);
+  EXPECT_DOUBLE_EQ(d.max_yade, 4.0);
+  EXPECT_DOUBLE_EQ(max_difference({1.0}, {-3.0}, 1).max_yade, 3.0);
   EXPECT_DOUBLE_EQ(d.relative, 0.25);
   EXPECT_DOUBLE_EQ(max_difference({0.0, 0.0}, {1.0, 1.0}, 2).relative, 0.0);
 }
