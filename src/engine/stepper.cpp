@@ -14,6 +14,7 @@
 #include "engine/pair_batch.hpp"
 #include "engine/pair_force.hpp"
 #include "engine/pair_sinks.hpp"
+#include "engine/force_outputs.hpp"
 #include "engine/force_partition.hpp"
 #include "engine/wall_batch.hpp"
 #include "engine/wall_pair_force.hpp"
@@ -39,12 +40,9 @@ void Stepper::update_time_step(World& world) {
 
 namespace {
 
-using detail::add_to;
 using detail::cross;
 using detail::particle_pair_force;
-using detail::sub_from;
 using detail::V3;
-using detail::vec;
 using detail::kHasBatchedKernel;
 using detail::particle_pairs_batched;
 using detail::wall_pair_force;
@@ -53,6 +51,12 @@ using detail::ForceLoopTotals;
 using detail::LogSink;
 using detail::SerialSink;
 using detail::with_slip_if;
+using detail::clear_wall_sums;
+using detail::ScatterOrStore;
+using detail::ScatterToBodies;
+using detail::StoreWallForce;
+using detail::wall_takes;
+using detail::WallTakesForce;
 
 // Below this many candidate pairs per thread the force loop runs serially (threading
 // overhead would dominate; also keeps tiny unit-test systems on the reference path).
@@ -69,104 +73,6 @@ int worker_threads() {
   return 1;
 #endif
 }
-
-// The walls' per-step sums, accumulated in wall-pair order by both force loops.
-void clear_wall_sums(std::vector<Wall>& walls) {
-  for (auto& wall : walls) {
-    wall.force.setZero();
-    wall.contact_count = 0;
-  }
-}
-// Wall pair carrying force f (N) on its particle: the wall takes -f, counts the contact,
-// and the power of the wall on the particle f . v_wall (W) goes to the ledger.
-inline void wall_takes(Wall& wall, const Vec3& f, ForceLoopTotals& totals) {
-  wall.force -= f;
-  ++wall.contact_count;
-  totals.wall_power += f.dot(wall.velocity);
-}
-
-// Where a pair's force goes. Serial: straight onto the bodies (body 2 gets +f and +t_j,
-// body 1 gets -f and -t_i). Threaded: ScatterOrStore below.
-struct ScatterToBodies {
-  Vec3* force;
-  Vec3* torque;
-  void carries(std::size_t, Index i, Index j, const V3& f, const V3& t_i, const V3& t_j) {
-    add_to(force[j], f);
-    sub_from(force[i], f);
-    add_to(torque[j], t_j);
-    sub_from(torque[i], t_i);
-  }
-  void none(std::size_t) {}
-};
-// Threaded: an inner body gets its share at once, as in the serial scatter; a pair with a
-// boundary body also goes to its slot, from which the boundary body is summed after the
-// barrier (engine/force_partition.hpp).
-struct ScatterOrStore {
-  Vec3* force;
-  Vec3* torque;
-  const Index* slot;
-  const std::uint8_t* boundary;
-  Vec3* slot_force;
-  Vec3* slot_torque_1;
-  Vec3* slot_torque_2;
-  void carries(std::size_t c, Index i, Index j, const V3& f, const V3& t_i, const V3& t_j) {
-    const Index s = slot[c];
-    if (s == ForcePartition::kNoSlot) {
-      add_to(force[j], f);
-      sub_from(force[i], f);
-      add_to(torque[j], t_j);
-      sub_from(torque[i], t_i);
-      return;
-    }
-    slot_force[s] = vec(f);
-    slot_torque_1[s] = Vec3(-t_i.x, -t_i.y, -t_i.z);
-    slot_torque_2[s] = vec(t_j);
-    if (!boundary[j]) {
-      add_to(force[j], f);
-      add_to(torque[j], t_j);
-    }
-    if (!boundary[i]) {
-      sub_from(force[i], f);
-      sub_from(torque[i], t_i);
-    }
-  }
-  void none(std::size_t c) {
-    const Index s = slot[c];
-    if (s == ForcePartition::kNoSlot) return;
-    slot_force[s].setZero();
-    slot_torque_1[s].setZero();
-    slot_torque_2[s].setZero();
-  }
-};
-
-// Where a wall pair's force goes. Serial: onto the sphere and, opposite, the wall (with the
-// ledger's wall power). Threaded: onto the sphere (its thread's own), and kept by pair for the
-// walls' sums after the parallel region, in wall-pair order.
-struct WallTakesForce {
-  Vec3* force;
-  Vec3* torque;
-  Wall& wall;
-  ForceLoopTotals& totals;
-  void carries(std::size_t, Index i, const Vec3& f, const Vec3& t) {
-    force[i] += f;
-    torque[i] += t;
-    wall_takes(wall, f, totals);
-  }
-  void none(std::size_t) {}
-};
-struct StoreWallForce {
-  Vec3* force;
-  Vec3* torque;
-  Vec3* wall_force;
-  std::uint8_t* wall_carries;
-  void carries(std::size_t c, Index i, const Vec3& f, const Vec3& t) {
-    wall_carries[c] = 1;
-    wall_force[c] = f;
-    force[i] += f;
-    torque[i] += t;
-  }
-  void none(std::size_t c) { wall_carries[c] = 0; }
-};
 
 // Particle pairs [begin, end) in pair order: the batched kernel for the built-in law, the
 // scalar reference for any other slot combination (same results, see pair_batch.hpp).
