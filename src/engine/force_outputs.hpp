@@ -29,16 +29,21 @@ inline void wall_takes(Wall& wall, const Vec3& f, ForceLoopTotals& totals) {
   totals.wall_power += f.dot(wall.velocity);
 }
 
-// Where a pair's force goes. Serial: straight onto the bodies (body 2 gets +f and +t_j,
-// body 1 gets -f and -t_i). Threaded: ScatterOrStore below.
+// A pair's force straight onto its bodies: body 2 gets +f and +t_j, body 1 gets -f and -t_i.
+inline void scatter_to_bodies(Vec3* force, Vec3* torque, Index i, Index j, const V3& f, const V3& t_i,
+                              const V3& t_j) {
+  add_to(force[j], f);
+  sub_from(force[i], f);
+  add_to(torque[j], t_j);
+  sub_from(torque[i], t_i);
+}
+
+// Where a pair's force goes. Serial: straight onto the bodies. Threaded: ScatterOrStore below.
 struct ScatterToBodies {
   Vec3* force;
   Vec3* torque;
   void carries(std::size_t, Index i, Index j, const V3& f, const V3& t_i, const V3& t_j) {
-    add_to(force[j], f);
-    sub_from(force[i], f);
-    add_to(torque[j], t_j);
-    sub_from(torque[i], t_i);
+    scatter_to_bodies(force, torque, i, j, f, t_i, t_j);
   }
   void none(std::size_t) {}
 };
@@ -56,10 +61,7 @@ struct ScatterOrStore {
   void carries(std::size_t c, Index i, Index j, const V3& f, const V3& t_i, const V3& t_j) {
     const Index s = slot[c];
     if (s == ForcePartition::kNoSlot) {
-      add_to(force[j], f);
-      sub_from(force[i], f);
-      add_to(torque[j], t_j);
-      sub_from(torque[i], t_i);
+      scatter_to_bodies(force, torque, i, j, f, t_i, t_j);
       return;
     }
     slot_force[s] = vec(f);

@@ -11,11 +11,11 @@
 
 #include "contact/contact_law.hpp"
 #include "core/interrupt.hpp"
+#include "engine/force_outputs.hpp"
+#include "engine/force_partition.hpp"
 #include "engine/pair_batch.hpp"
 #include "engine/pair_force.hpp"
 #include "engine/pair_sinks.hpp"
-#include "engine/force_outputs.hpp"
-#include "engine/force_partition.hpp"
 #include "engine/wall_batch.hpp"
 #include "engine/wall_pair_force.hpp"
 
