@@ -19,6 +19,16 @@ struct CheckContext {
   SpeedTally& speed;
 };
 
+// The tolerance table's section [<setup>.<size>] (e.g. [shear.small]) that a check of one
+// size runs by; nullptr, and a failed row "<setup> <size>", when the file has none.
+inline const toml::table* size_section(const CheckContext& ctx, Report& report, const std::string& setup,
+                                       const std::string& size) {
+  const std::string base = setup + "." + size;
+  const toml::table* t = ctx.tol.at_path(base).as_table();
+  if (!t) report.fail(setup + " " + size, "no [" + base + "] in the tolerances file");
+  return t;
+}
+
 // Deterministic 2-3 body scenes ([micro.scenes]): time series compared particle by particle.
 void check_micro(const CheckContext& ctx, Report& report);
 // One settled packing loaded by both codes ([oedometer.<size>]): force-displacement curves.

@@ -76,12 +76,8 @@ void compare_curves(Report& report, const std::string& label, const Csv& c, cons
 }  // namespace
 
 void check_oedometer(const CheckContext& ctx, Report& report, const std::string& size) {
-  const std::string base = "oedometer." + size;
-  const toml::table* t = ctx.tol.at_path(base).as_table();
-  if (!t) {
-    report.fail("oedometer " + size, "no [" + base + "] in the tolerances file");
-    return;
-  }
+  const toml::table* t = size_section(ctx, report, "oedometer", size);
+  if (!t) return;
   fs::path config = ctx.opt.source / t->at_path("config").value_or(std::string());
   const fs::path work = ctx.opt.workdir / ("oedometer_" + size);
   fs::create_directories(work);

@@ -25,6 +25,7 @@ namespace {
 // One size of the check: [shear.<size>] of the tolerance table, the scene it names and the
 // work folder.
 struct ShearSetting {
+  std::string size;   // "small" or "full"
   std::string base;   // "shear.<size>"
   std::string label;  // "shear <size>"
   const toml::table& t;
@@ -79,7 +80,7 @@ std::optional<fs::path> shear_sample(const CheckContext& ctx, const ShearSetting
 // Deterministic start: no consolidation (the servo runs 4 steps), shearing at once for
 // early_steps; before chaos sets in the two codes must coincide.
 void compare_deterministic_start(const CheckContext& ctx, const ShearSetting& s, Report& report,
-                                 const toml::table& doc, const std::string& size, double first_load) {
+                                 const toml::table& doc, double first_load) {
   const toml::table& box = *doc["shear_box"].as_table();
   const double dt = doc.at_path("integration.time_step").value_or(0.0);
   const double speed = box.at_path("shear_speed").value_or(0.005);
@@ -92,7 +93,7 @@ void compare_deterministic_start(const CheckContext& ctx, const ShearSetting& s,
   eb.insert_or_assign("strength_window_start", 0.0);
   eb.insert_or_assign("strength_window_end", disp);
   eb.insert_or_assign("record_interval", 10);
-  const fs::path econfig = write_config(s, e, "shear_" + size + "_early.toml");
+  const fs::path econfig = write_config(s, e, "shear_" + s.size + "_early.toml");
   const fs::path c_out = s.work / "colza_early", y_out = s.work / "yade_early";
   const std::vector<std::string> sigma = normal_stress_argument(first_load);
   std::printf("crosscheck: %s: deterministic start (%g steps)...\n", s.label.c_str(), early_steps);
@@ -170,13 +171,9 @@ std::optional<std::pair<double, double>> compare_load(const CheckContext& ctx, c
 }  // namespace
 
 void check_shear(const CheckContext& ctx, Report& report, const std::string& size) {
-  const std::string base = "shear." + size;
-  const toml::table* t = ctx.tol.at_path(base).as_table();
-  if (!t) {
-    report.fail("shear " + size, "no [" + base + "] in the tolerances file");
-    return;
-  }
-  const ShearSetting s{base, "shear " + size, *t, ctx.opt.source / t->at_path("config").value_or(std::string()),
+  const toml::table* t = size_section(ctx, report, "shear", size);
+  if (!t) return;
+  const ShearSetting s{size, "shear." + size, "shear " + size, *t, ctx.opt.source / t->at_path("config").value_or(std::string()),
                        ctx.opt.workdir / ("shear_" + size)};
   fs::create_directories(s.work);
   toml::table doc;
@@ -202,14 +199,14 @@ void check_shear(const CheckContext& ctx, Report& report, const std::string& siz
   for (const char* key : {"shear_displacement", "strength_window_start", "strength_window_end"})
     if (const auto v = t->at_path(key).value<double>()) {
       box->insert_or_assign(key, *v);
-      std::printf("crosscheck: %s: shear_box.%s = %g (from [%s])\n", s.label.c_str(), key, *v, base.c_str());
+      std::printf("crosscheck: %s: shear_box.%s = %g (from [%s])\n", s.label.c_str(), key, *v, s.base.c_str());
     }
   const fs::path config = write_config(s, doc, "shear_" + size + ".toml");
   const double window_start = box->at_path("strength_window_start").value_or(0.020);
   const double window_end = box->at_path("strength_window_end").value_or(0.030);
 
   // 2. Deterministic start.
-  compare_deterministic_start(ctx, s, report, doc, size, loads[0]);
+  compare_deterministic_start(ctx, s, report, doc, loads[0]);
 
   // 3. The loads, full protocol.
   std::vector<double> c_strength, y_strength;
