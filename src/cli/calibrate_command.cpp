@@ -83,7 +83,7 @@ int calibrate_command(const CalibrateOptions& opt) {
           throw ConfigError(opt.spec_path, "stage", "the spec is for stage \"" + std::string(to_string(spec.stage)) +
                                                         "\", the command asked for \"" + opt.stage + "\"");
         validate_problem(spec.problem, opt.mode == "sequential");
-        check_output_dir(opt.out_dir, opt.force);
+        check_output_dir(opt.out_dir, opt.force, "runs");  // runs/: a stopped calibration, resumed
       }))
     return code;
   for (const auto& w : spec.warnings) std::fprintf(stderr, "colza: warning: %s\n", w.c_str());

@@ -12,6 +12,7 @@ nlohmann::json common_summary(const RunConfig& c, const std::string& scenario, i
           {"colza_version", kVersion},
           {"git_revision", git_revision()},
           {"config", c.source},
+          {"overrides", c.overrides},
           {"seed", c.seed},
           {"threads", threads},
           {"stiffness_rule", to_string(c.stiffness_rule)},

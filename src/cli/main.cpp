@@ -1,9 +1,12 @@
 // colza command line. Exit codes: 0 success, 1 internal failure, 2 bad input.
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <limits>
+#include <string>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -30,6 +33,39 @@ int default_worker_threads(int jobs) {
 #endif
 }
 
+// Validators whose messages read well (CLI11's PositiveNumber prints its range as
+// 0 .. 1.797...e308 and lets 0 through for integers).
+CLI::Validator whole_number(long long lowest, long long highest) {
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        try {
+          std::size_t used = 0;
+          const long long v = std::stoll(text, &used);
+          if (used == text.size() && v >= lowest && v <= highest) return {};
+        } catch (const std::exception&) {
+        }
+        return "must be a whole number from " + std::to_string(lowest) + " to " + std::to_string(highest) +
+               ", got '" + text + "'";
+      },
+      "INT");
+}
+CLI::Validator at_least_one() { return whole_number(1, 4096); }
+CLI::Validator not_negative_integer() { return whole_number(0, std::numeric_limits<long long>::max()); }
+
+CLI::Validator positive_finite() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        try {
+          std::size_t used = 0;
+          const double v = std::stod(text, &used);
+          if (used == text.size() && std::isfinite(v) && v > 0.0) return {};
+        } catch (const std::exception&) {
+        }
+        return "must be a finite number > 0, got '" + text + "'";
+      },
+      "NUMBER");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -42,23 +78,25 @@ int main(int argc, char** argv) {
   run->add_option("scenario", opt.scenario, "oedometer | shear | shear-series | scene")
       ->required()
       ->check(CLI::IsMember({"oedometer", "shear", "shear-series", "scene"}));
-  run->add_option("--config", opt.config_path, "TOML config (default: built-in = data/oedometer.toml)");
+  run->add_option("--config", opt.config_path,
+                  "TOML config (oedometer: default built-in = data/oedometer.toml; shear, shear-series and "
+                  "scene need one, e.g. data/shear.toml)");
   run->add_option("--set", opt.overrides, "override a config key: --set particle.friction=0.3 (repeatable)")
       ->take_last()
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   run->add_option("--seed", opt.seed, "random seed for sample generation (overrides the config's seed)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(not_negative_integer());
   run->add_option("--threads", opt.threads,
                   "worker threads per run (default: OMP_NUM_THREADS, else the cores divided by --jobs; "
                   "the simulation is the same bit for bit at any count, only the damping-energy total "
                   "may differ in its last bits)")
-      ->check(CLI::PositiveNumber);
+      ->check(at_least_one());
   run->add_option("--out", opt.out_dir, "output directory")->required();
   run->add_flag("--force", opt.force, "replace an earlier result in --out (only once the new run has succeeded)");
   run->add_option("--normal-stress", opt.normal_stress, "shear: normal stress held by the plate (Pa)")
-      ->check(CLI::PositiveNumber);
-  run->add_option("--jobs", opt.jobs, "shear-series: loads run concurrently")->check(CLI::PositiveNumber);
+      ->check(positive_finite());
+  run->add_option("--jobs", opt.jobs, "shear-series: loads run concurrently")->check(at_least_one());
   run->add_flag("--quiet", opt.quiet, "no progress display");
 
   colza::CalibrateOptions cal;
@@ -74,10 +112,10 @@ int main(int argc, char** argv) {
                         "where DEM runs are kept and reused (default: OUT/runs); calibrations of the same model "
                         "(the other mode, other targets) can share one: a run is reused when its resolved config, "
                         "seed and packing are the same");
-  calibrate->add_option("--jobs", cal.jobs, "design runs run concurrently")->check(CLI::PositiveNumber);
+  calibrate->add_option("--jobs", cal.jobs, "design runs run concurrently")->check(at_least_one());
   calibrate->add_option("--threads", cal.threads,
                         "worker threads per design run (default: OMP_NUM_THREADS, else the cores divided by --jobs)")
-      ->check(CLI::PositiveNumber);
+      ->check(at_least_one());
   calibrate->add_flag("--force", cal.force, "replace an earlier calibration result in --out (finished runs are still reused)");
   calibrate->add_flag("--quiet", cal.quiet, "no per-run lines");
 
@@ -93,6 +131,17 @@ int main(int argc, char** argv) {
     app.exit(e);
     return 2;
   }
+  // An option the chosen scenario would ignore is an error: a user who passes it expects it to act.
+  auto inapplicable = [&](const char* option, const char* who_takes_it) {
+    std::fprintf(stderr, "colza: error: %s: `colza run %s` does not take it; %s\n", option, opt.scenario.c_str(),
+                 who_takes_it);
+    return 2;
+  };
+  if (run->parsed() && run->count("--normal-stress") > 0 && opt.scenario != "shear")
+    return inapplicable("--normal-stress",
+                        "only `colza run shear` does (a series takes its loads from shear_box.normal_stresses)");
+  if (run->parsed() && run->count("--jobs") > 0 && opt.scenario != "shear-series")
+    return inapplicable("--jobs", "only `colza run shear-series` does (use --threads for one run)");
   if (opt.threads == 0) opt.threads = default_worker_threads(opt.jobs);
   if (cal.threads == 0) cal.threads = default_worker_threads(cal.jobs);
 #ifdef _OPENMP

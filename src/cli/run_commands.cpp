@@ -115,11 +115,15 @@ int run_command(const RunOptions& opt) {
   try {
     std::vector<std::string> overrides = opt.overrides;
     if (opt.seed >= 0) overrides.push_back("seed=" + std::to_string(opt.seed));
+    if (opt.config_path.empty() && scenario != Scenario::kOedometer)
+      throw ConfigError("--config", "", "`colza run " + opt.scenario +
+                                            "` needs a config file (the built-in defaults are the oedometer's); "
+                                            "the paper's shear box is data/shear.toml");
     config = load_run_config(scenario, opt.config_path, overrides);
     if (opt.out_dir.empty()) throw ConfigError("--out", "", "an output directory is required");
     if (scenario == Scenario::kShear && !series && !(opt.normal_stress > 0.0))
       throw ConfigError("--normal-stress", "", "`colza run shear` needs --normal-stress PA (> 0)");
-    check_output_dir(opt.out_dir, opt.force);
+    check_output_dir(opt.out_dir, opt.force, series ? "sample.json" : "");  // a stopped series is resumed
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "colza: error: %s\n", e.what());
     return 2;
@@ -130,7 +134,8 @@ int run_command(const RunOptions& opt) {
     if (scenario == Scenario::kOedometer) run_oedometer_scenario(config, opt, out);
     else if (scenario == Scenario::kShear) run_shear_scenario(config, opt, out);
     else run_scene_scenario(config, opt, out);
-    out.commit();
+    // --force: the earlier result's files that this run does not write go too.
+    out.commit(opt.force ? earlier_run_outputs(opt.out_dir) : std::vector<std::string>{});
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "colza: error: %s\n", e.what());
     return 2;

@@ -7,7 +7,7 @@ namespace colza {
 
 struct RunOptions {
   std::string scenario;               // "oedometer" | "shear" | "shear-series" | "scene"
-  std::string config_path;            // empty: built-in defaults (= data/oedometer.toml)
+  std::string config_path;            // empty: built-in defaults (= data/oedometer.toml), oedometer only
   std::vector<std::string> overrides; // --set key=value
   long long seed = -1;                // --seed, -1: from the config
   int threads = 0;                    // 0: default_worker_threads(jobs)

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <sstream>
 
 #include "analysis/mohr_coulomb.hpp"
@@ -24,13 +25,19 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// FNV-1a 64 of the configuration as used, without the list of loads: finished loads and
-// the prepared sample are reused only by a series with the same fingerprint.
+// FNV-1a 64 of the configuration as used, without the list of loads, and of the packing
+// file's contents when the config names one (a file regenerated at the same path is another
+// sample): finished loads and the prepared sample are reused only by a series with the same
+// fingerprint.
 std::string config_fingerprint(const RunConfig& c) {
   toml::table doc = toml::parse(c.resolved_toml);
   if (auto* box = doc["shear_box"].as_table()) box->erase("normal_stresses");
   std::ostringstream text;
   text << doc;
+  if (!c.shear_box.packing_file.empty()) {
+    std::ifstream packing(c.shear_box.packing_file, std::ios::binary);
+    text << "\n# packing " << packing.rdbuf();
+  }
   return fingerprint_text(text.str());
 }
 
@@ -92,11 +99,50 @@ void run_shear_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging
   print_load(r);
 }
 
+namespace {
+
+// Where a series writes. A new series, or one resumed (no --force), writes straight into
+// --out: each load appears, complete, as soon as it is done, and a stopped series keeps the
+// finished loads for the next start. With --force the whole new series is built in a
+// staging folder and replaces the earlier one only once every load is done, so a stopped
+// or failed run leaves the earlier result as it was.
+class SeriesOutput {
+ public:
+  SeriesOutput(const fs::path& dir, bool force) : dir_(dir) {
+    if (force) {
+      stale_ = earlier_run_outputs(dir);
+      staging_.emplace(dir, /*overwrite=*/true);
+    } else {
+      fs::create_directories(dir);
+    }
+  }
+  std::string path(const std::string& name) { return staging_ ? staging_->path(name) : (dir_ / name).string(); }
+  void commit_summary(const nlohmann::json& summary) {
+    if (staging_) {
+      write_json(staging_->path("summary.json"), summary);
+      staging_->commit(stale_);
+      return;
+    }
+    OutputStaging out(dir_, /*overwrite=*/true);  // an earlier summary was refused unless --force
+    write_json(out.path("summary.json"), summary);
+    out.commit();
+  }
+
+ private:
+  fs::path dir_;
+  std::optional<OutputStaging> staging_;
+  std::vector<std::string> stale_;
+};
+
+}  // namespace
+
 int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   const auto t_start = std::chrono::steady_clock::now();
   const fs::path dir(opt.out_dir);
-  check_output_dir(dir, opt.force);  // a finished series is not overwritten without --force
-  fs::create_directories(dir);
+  // A finished series is not overwritten without --force; an unfinished one (its
+  // sample.json) is resumed.
+  check_output_dir(dir, opt.force, "sample.json");
+  SeriesOutput out(dir, opt.force);
   const std::string fingerprint = config_fingerprint(config);
 
   // --- the sample, shared by all loads (reused by a resumed series) ----------------
@@ -105,23 +151,25 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   ShearSample sample;
   bool sample_reused = false;
   const fs::path sample_info = dir / "sample.json";
-  if (!opt.force && fs::exists(sample_info) && fs::exists(dir / "packing.txt") &&
-      nlohmann::json::parse(std::ifstream(sample_info)).value("config_fingerprint", "") == fingerprint) {
+  const nlohmann::json earlier_sample =
+      !opt.force && fs::exists(sample_info) ? read_json_file(sample_info.string()) : nlohmann::json::object();
+  if (earlier_sample.value("config_fingerprint", "") == fingerprint && fs::exists(dir / "packing.txt")) {
     RunConfig from_file = c;
     from_file.shear_box.packing_file = (dir / "packing.txt").string();
     sample = prepare_shear_sample(from_file, progress);
-    sample.generated = nlohmann::json::parse(std::ifstream(sample_info)).value("particles_generated", sample.generated);
+    sample.generated = earlier_sample.value("particles_generated", sample.generated);
     sample_reused = true;
   } else {
     sample = prepare_shear_sample(c, progress);
-    write_packing((dir / "packing.txt.tmp").string(), sample.particles);
-    fs::rename(dir / "packing.txt.tmp", dir / "packing.txt");
+    const std::string packing = out.path("packing.txt");
+    write_packing(packing + ".tmp", sample.particles);
+    fs::rename(packing + ".tmp", packing);
     nlohmann::json info = {{"config_fingerprint", fingerprint},
                            {"particles", sample.particles.size()},
                            {"particles_generated", sample.generated},
                            {"settling_converged", sample.settling.converged},
                            {"stages", stages_json(sample.stages)}};
-    write_text_atomically(sample_info, info.dump(2) + "\n");
+    write_text_atomically(out.path("sample.json"), info.dump(2) + "\n");
   }
   std::printf("shear series: %zu particles (%zu generated)%s, %zu loads, %d job(s)\n", sample.particles.size(),
               sample.generated, sample_reused ? ", sample reused" : "", c.shear_box.normal_stresses.size(), opt.jobs);
@@ -134,7 +182,7 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   for (std::size_t k = 0; k < loads.size(); ++k) {
     const fs::path summary = dir / load_label(loads[k]) / "summary.json";
     if (!opt.force && fs::exists(summary)) {
-      const auto s = nlohmann::json::parse(std::ifstream(summary));
+      const auto s = read_json_file(summary.string());
       if (s.value("config_fingerprint", "") == fingerprint && s.value("normal_stress", -1.0) == loads[k]) {
         strength[k] = s["shear_strength"].get<double>();
         load_json[k] = s;
@@ -151,9 +199,9 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
     Progress load_progress(!opt.quiet && opt.jobs <= 1);
     const ShearLoadResult r = run_shear_load(c, sample, loads[k], load_progress);
     nlohmann::json s = load_summary(c, sample, r, opt.threads);
-    OutputStaging out(dir / load_label(loads[k]), true);
-    write_load(out, c, r, s);
-    out.commit();
+    OutputStaging load_out(out.path(load_label(loads[k])), true);
+    write_load(load_out, c, r, s);
+    load_out.commit();
     std::lock_guard<std::mutex> lock(mutex);
     strength[k] = r.shear_strength;
     load_json[k] = s;
@@ -186,9 +234,7 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   }
   s["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   s["jobs"] = opt.jobs;
-  OutputStaging out(dir, /*overwrite=*/true);  // an earlier summary was refused above unless --force
-  write_json(out.path("summary.json"), s);
-  out.commit();
+  out.commit_summary(s);
   return 0;
 }
 

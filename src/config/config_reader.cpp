@@ -1,6 +1,7 @@
 #include "config/config_reader.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -31,6 +32,9 @@ std::string format_number(double x) {
 // ---- ConfigReader -------------------------------------------------------------------
 
 ConfigReader ConfigReader::from_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw ConfigError(path, "", "is not a file (a config is a TOML file, e.g. data/oedometer.toml)");
   std::ifstream in(path);
   if (!in) throw ConfigError(path, "", "cannot open the config file");
   std::stringstream buffer;
@@ -253,6 +257,7 @@ std::vector<double> ConfigNode::number_list(const std::string& key) const {
     if (auto v = e.value_exact<double>()) out.push_back(*v);
     else if (auto i = e.value_exact<std::int64_t>()) out.push_back(static_cast<double>(*i));
     else fail(key, "expected an array of numbers");
+    if (!std::isfinite(out.back())) fail(key, "every entry must be a finite number, got " + format_number(out.back()));
   }
   return out;
 }

@@ -263,7 +263,9 @@ RunConfig load_run_config(Scenario scenario, const std::string& config_path,
                           const std::vector<std::string>& overrides) {
   ConfigReader reader = config_path.empty() ? ConfigReader::empty() : ConfigReader::from_file(config_path);
   for (const auto& o : overrides) reader.apply_override(o);
-  return read_run_config(scenario, reader);
+  RunConfig c = read_run_config(scenario, reader);
+  c.overrides = overrides;
+  return c;
 }
 
 PhysicsSettings make_physics(const RunConfig& c) {

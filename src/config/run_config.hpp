@@ -104,6 +104,7 @@ struct SceneSpec {                    // [scene]
 
 struct RunConfig {
   std::string source;                 // file name (or built-in defaults)
+  std::vector<std::string> overrides; // --set key=value (and --seed as seed=N), in order
   std::string resolved_toml;          // the configuration as used, overrides applied
   std::uint64_t seed = 1;
   ParticleSpec particle;

@@ -13,12 +13,43 @@ namespace colza {
 
 namespace fs = std::filesystem;
 
-void check_output_dir(const fs::path& dir, bool overwrite) {
+namespace {
+
+bool is_staging_folder(const fs::path& entry) { return entry.filename().string().rfind(".colza-partial-", 0) == 0; }
+
+}  // namespace
+
+void check_output_dir(const fs::path& dir, bool overwrite, const std::string& unfinished_marker) {
+  const std::string name = "--out " + dir.string();
   std::error_code ec;
-  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
-    throw ConfigError("--out", dir.string(), "exists and is not a directory");
-  if (!overwrite && fs::exists(dir / "summary.json", ec))
-    throw ConfigError("--out", dir.string(), "already holds a result (summary.json); pass --force to replace it");
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) throw ConfigError(name, "", "exists and is not a directory");
+  if (overwrite || !fs::is_directory(dir, ec)) return;
+  if (fs::exists(dir / "summary.json", ec))
+    throw ConfigError(name, "", "already holds a result (summary.json); pass --force to replace it");
+  if (!unfinished_marker.empty() && fs::exists(dir / unfinished_marker, ec)) return;  // resumed
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (!is_staging_folder(it->path()))
+      throw ConfigError(name, "",
+                        "holds files (" + it->path().filename().string() +
+                            ", ...) but no colza result; choose a new or empty directory, or pass --force to write "
+                            "into it (files of the same name are replaced)");
+}
+
+std::vector<std::string> earlier_run_outputs(const fs::path& dir) {
+  std::error_code ec;
+  std::vector<std::string> names;
+  if (!fs::exists(dir / "summary.json", ec) && !fs::exists(dir / "sample.json", ec)) return names;
+  static const char* const kRunFiles[] = {"summary.json", "sample.json", "packing.txt", "curve.csv", "series.csv",
+                                          "result.h5"};
+  for (const char* f : kRunFiles)
+    if (fs::exists(dir / f, ec)) names.push_back(f);
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string f = it->path().filename().string();
+    if (f.rfind("load-", 0) == 0 && fs::is_directory(it->path(), ec) && fs::exists(it->path() / "summary.json", ec))
+      names.push_back(f);
+  }
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 void write_text_atomically(const fs::path& file, const std::string& text) {
@@ -66,14 +97,14 @@ OutputStaging::OutputStaging(const fs::path& dir, bool overwrite) : dir_(dir) {
   std::error_code ec;
   if (!fs::exists(dir, ec)) {
     fs::create_directories(dir, ec);
-    if (ec) throw ConfigError("--out", dir.string(), "cannot create the directory: " + ec.message());
+    if (ec) throw ConfigError("--out " + dir.string(), "", "cannot create the directory: " + ec.message());
     created_dir_ = true;
   }
   const std::string prefix = staging_prefix();
   remove_abandoned_staging(dir, prefix);
   staging_ = dir / (prefix + std::to_string(::getpid()));
   fs::create_directories(staging_, ec);
-  if (ec) throw ConfigError("--out", dir.string(), "cannot write into the directory: " + ec.message());
+  if (ec) throw ConfigError("--out " + dir.string(), "", "cannot write into the directory: " + ec.message());
 }
 
 std::string OutputStaging::path(const std::string& name) {
@@ -81,13 +112,19 @@ std::string OutputStaging::path(const std::string& name) {
   return (staging_ / name).string();
 }
 
-void OutputStaging::commit() {
+void OutputStaging::commit(const std::vector<std::string>& stale) {
   // summary.json last: its presence marks a complete result.
   std::stable_partition(files_.begin(), files_.end(), [](const std::string& f) { return f != "summary.json"; });
-  // An earlier result being replaced (--force) stops looking complete before any file moves.
+  // An earlier result being replaced (--force) stops looking complete before any file moves;
+  // then its entries that the new result does not replace go.
   std::error_code ec;
   fs::remove(dir_ / "summary.json", ec);
-  for (const auto& f : files_) fs::rename(staging_ / f, dir_ / f);
+  for (const auto& f : stale)
+    if (std::find(files_.begin(), files_.end(), f) == files_.end()) fs::remove_all(dir_ / f, ec);
+  for (const auto& f : files_) {
+    if (fs::is_directory(dir_ / f, ec)) fs::remove_all(dir_ / f);  // rename() replaces files only
+    fs::rename(staging_ / f, dir_ / f);
+  }
   fs::remove_all(staging_);
   committed_ = true;
 }

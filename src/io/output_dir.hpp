@@ -13,16 +13,20 @@ namespace colza {
 
 class OutputStaging {
  public:
-  // Throws ConfigError (key "--out") if `dir` already holds a result (a summary.json)
-  // and `overwrite` is false, or if it cannot be created.
+  // Throws ConfigError (naming "--out DIR") if `overwrite` is false and `dir` already holds
+  // a result (a summary.json) or other files (check_output_dir), or if it cannot be created.
   OutputStaging(const std::filesystem::path& dir, bool overwrite);
   ~OutputStaging();
   OutputStaging(const OutputStaging&) = delete;
   OutputStaging& operator=(const OutputStaging&) = delete;
 
-  // Where to write `name` now; it appears as dir/name after commit().
+  // Where to write `name` (a file, or a folder the caller fills); it appears as dir/name
+  // after commit(), replacing a file or folder of that name.
   std::string path(const std::string& name);
-  void commit();
+  // Moves everything into place, summary.json last. `stale`: entries of an earlier result
+  // in dir (earlier_run_outputs) removed, after its summary.json and before the moves,
+  // unless the new result writes them.
+  void commit(const std::vector<std::string>& stale = {});
   const std::filesystem::path& dir() const { return dir_; }
 
  private:
@@ -34,7 +38,15 @@ class OutputStaging {
 // Writes `text` to `file` under a temporary name, then renames it into place.
 void write_text_atomically(const std::filesystem::path& file, const std::string& text);
 
-// Checks the output directory without creating anything (for early validation).
-void check_output_dir(const std::filesystem::path& dir, bool overwrite);
+// Checks the output directory without creating anything (for early validation). Unless
+// `overwrite` (--force), a directory that holds a summary.json, or any file but staging
+// folders, is refused; one that holds `unfinished_marker` (e.g. a series' sample.json) is
+// accepted, to be resumed.
+void check_output_dir(const std::filesystem::path& dir, bool overwrite, const std::string& unfinished_marker = "");
+
+// The entries of an earlier `colza run` result in dir (its summary.json or sample.json,
+// packing.txt, curve.csv, series.csv, result.h5, load-* folders with a summary.json), none
+// if dir holds no such result; for OutputStaging::commit when --force replaces it.
+std::vector<std::string> earlier_run_outputs(const std::filesystem::path& dir);
 
 }  // namespace colza

@@ -28,6 +28,7 @@ std::vector<PackedSphere> read_packing(const std::string& file, const std::strin
     p.line = line_no;
     spheres.push_back(p);
   }
+  if (spheres.empty()) throw ConfigError(file, key, "holds no sphere (expected lines 'x y z r' in m)");
   return spheres;
 }
 

@@ -3,6 +3,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "config/config_error.hpp"
+
 namespace colza {
 
 nlohmann::json stages_json(const std::vector<StageTiming>& stages) {
@@ -21,6 +23,17 @@ void write_json(const std::string& file, const nlohmann::json& value) {
   if (!out) throw std::runtime_error("cannot write " + file);
   out << value.dump(2) << '\n';
   if (!out) throw std::runtime_error("cannot write " + file);
+}
+
+nlohmann::json read_json_file(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw ConfigError(file, "", "cannot be read");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw ConfigError(file, "", std::string("is not valid JSON (") + e.what() +
+                                    "); colza wrote it, so it was edited or cut short: remove it, or pass --force");
+  }
 }
 
 }  // namespace colza

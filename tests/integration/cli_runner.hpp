@@ -1,16 +1,20 @@
 // Helpers to run the colza executable from tests and read its outputs.
 #pragma once
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <utility>
 
 namespace colza::testing {
@@ -39,6 +43,36 @@ inline CliResult run_colza(const std::string& args) {
   r.stderr_text = read_file(err);
   std::filesystem::remove(err);
   return r;
+}
+
+// Starts `colza <args>` (stdout discarded), sends it SIGINT (Ctrl-C) after `delay` and
+// waits for it: its exit code (130 when the signal stopped it) and stderr. -1 if it ended
+// on a signal instead of exiting.
+inline CliResult run_colza_interrupted(const std::string& args, std::chrono::milliseconds delay) {
+  const auto err = std::filesystem::temp_directory_path() / ("colza-stderr-" + std::to_string(::getpid()));
+  const std::string cmd = std::string("exec ") + COLZA_EXECUTABLE + " " + args + " > /dev/null 2> " + err.string();
+  CliResult r;
+  const pid_t child = ::fork();
+  if (child < 0) return r;
+  if (child == 0) {
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  std::this_thread::sleep_for(delay);
+  ::kill(child, SIGINT);
+  int status = 0;
+  if (::waitpid(child, &status, 0) == child && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
+  r.stderr_text = read_file(err);
+  std::filesystem::remove(err);
+  return r;
+}
+
+// Every file under `dir` (relative path -> contents), to compare a result before and after.
+inline std::map<std::string, std::string> directory_contents(const std::filesystem::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
+    files[std::filesystem::relative(e.path(), dir).string()] = e.is_regular_file() ? read_file(e.path()) : "<dir>";
+  return files;
 }
 
 inline nlohmann::json read_json(const std::filesystem::path& p) { return nlohmann::json::parse(read_file(p)); }

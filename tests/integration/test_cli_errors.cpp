@@ -1,12 +1,8 @@
 // Bad input: a clear message naming file, key and reason, exit code 2, nothing written,
 // and an earlier result never replaced by a failed run.
 #include <gtest/gtest.h>
-#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#include <chrono>
-#include <thread>
 
 #include "cli_runner.hpp"
 
@@ -95,30 +91,76 @@ TEST(CliErrors, UsageErrorsExitWithTwo) {
   EXPECT_EQ(run_colza("--help").exit_code, 0);
 }
 
+TEST(CliErrors, OptionsAScenarioWouldIgnoreAndOutOfRangeValuesAreErrors) {
+  const fs::path out = scratch_dir("inapplicable");
+  const std::string shear = source_path("tests/data/small_shear.toml");
+  CliResult r = run_colza("run oedometer --quiet --config " + kConfig + " --normal-stress 1000 --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("--normal-stress: `colza run oedometer` does not take it"), std::string::npos)
+      << r.stderr_text;
+  r = run_colza("run shear --quiet --config " + shear + " --normal-stress 1000 --jobs 2 --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("--jobs: `colza run shear` does not take it"), std::string::npos) << r.stderr_text;
+  // The built-in defaults are the oedometer's: a shear run without a config is refused.
+  r = run_colza("run shear-series --quiet --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("--config"), std::string::npos) << r.stderr_text;
+  // A folder given as the config.
+  r = run_colza("run oedometer --quiet --config " + source_path("data") + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("is not a file"), std::string::npos) << r.stderr_text;
+  for (const char* bad : {"--threads 0", "--seed -3", "--threads 1.5"}) {
+    r = run_colza(std::string("run oedometer --quiet ") + bad + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(r.stderr_text.find("must be a whole number"), std::string::npos) << bad << ": " << r.stderr_text;
+  }
+  r = run_colza("run shear --quiet --config " + shear + " --normal-stress inf --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("must be a finite number > 0"), std::string::npos) << r.stderr_text;
+  r = run_colza("run shear-series --quiet --config " + shear + " --set shear_box.normal_stresses=[1e4,inf] --out " +
+                out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("shear_box.normal_stresses': every entry must be a finite number"), std::string::npos)
+      << r.stderr_text;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(CliErrors, AFolderWithOtherFilesIsNotWrittenIntoWithoutForce) {
+  const fs::path out = scratch_dir("foreign-files");
+  fs::create_directories(out);
+  write_file(out / "packing.txt", "my own packing\n");
+  const CliResult r = run_colza("run oedometer --quiet --config " + kConfig + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("holds files (packing.txt, ...) but no colza result"), std::string::npos)
+      << r.stderr_text;
+  EXPECT_EQ(read_file(out / "packing.txt"), "my own packing\n");
+}
+
+TEST(CliErrors, EmptyPackingFileIsRefusedBeforeTheRun) {
+  const fs::path dir = scratch_dir("empty-packing");
+  fs::create_directories(dir);
+  write_file(dir / "empty.txt", "# x y z r\n");
+  const CliResult r = run_colza("run oedometer --quiet --config " + kConfig + " --set oedometer.packing_file=" +
+                                (dir / "empty.txt").string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find((dir / "empty.txt").string() + ": key 'oedometer.packing_file': holds no sphere"),
+            std::string::npos)
+      << r.stderr_text;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 TEST(CliErrors, InterruptedRunRemovesItsPartialOutputsAndKeepsTheEarlierResult) {
   // Ctrl-C (SIGINT) during a run: colza stops between two steps, removes its staging folder
   // and exits with 128 + 2; the earlier result that --force would have replaced stays whole.
   const fs::path out = scratch_dir("interrupted");
   fs::create_directories(out);
   write_file(out / "summary.json", "{\"earlier\": true}\n");
-  const fs::path err = out.parent_path() / "interrupted-stderr.txt";
-  const std::string cmd = std::string("exec ") + COLZA_EXECUTABLE + " run oedometer --quiet --force --config " +
-                          source_path("data/oedometer.toml") + " --out " + out.string() + " > /dev/null 2> " +
-                          err.string();
-  const pid_t child = ::fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
   // The full-size oedometer takes most of a minute; 1.5 s in, it is generating or settling.
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
-  ::kill(child, SIGINT);
-  int status = 0;
-  ASSERT_EQ(::waitpid(child, &status, 0), child);
-  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-  EXPECT_EQ(WEXITSTATUS(status), 130);
-  EXPECT_NE(read_file(err).find("interrupted by SIGINT"), std::string::npos) << read_file(err);
+  const CliResult r = run_colza_interrupted(
+      "run oedometer --quiet --force --config " + source_path("data/oedometer.toml") + " --out " + out.string(),
+      std::chrono::milliseconds(1500));
+  EXPECT_EQ(r.exit_code, 130);
+  EXPECT_NE(r.stderr_text.find("interrupted by SIGINT"), std::string::npos) << r.stderr_text;
   EXPECT_EQ(read_file(out / "summary.json"), "{\"earlier\": true}\n");
   std::size_t entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(out)) ++entries;

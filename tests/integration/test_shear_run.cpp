@@ -106,6 +106,41 @@ TEST_F(SmallShearSeries, ResumeReusesFinishedLoadsAndRefusesAFinishedSeries) {
   EXPECT_EQ(read_file(out_ / "load-78750Pa" / "curve.csv"), read_file(resumed / "load-78750Pa" / "curve.csv"));
 }
 
+TEST_F(SmallShearSeries, ForceReplacesTheEarlierSeriesOnlyOnceTheNewOneIsComplete) {
+  const fs::path earlier = scratch_dir("small-shear-replaced");
+  fs::copy(out_, earlier, fs::copy_options::recursive);
+  const auto before = directory_contents(earlier);
+  // Stopped during its first load (100 mm of shear from the earlier sample takes many
+  // seconds): the earlier series is left exactly as it was, sample included.
+  const std::string from_packing = " --set shear_box.packing_file=" + (out_ / "packing.txt").string();
+  CliResult r = run_colza_interrupted("run shear-series --quiet --force --config " + kConfig + from_packing +
+                                          " --set shear_box.shear_displacement=0.1 --out " + earlier.string(),
+                                      std::chrono::milliseconds(1500));
+  EXPECT_EQ(r.exit_code, 130) << r.stderr_text;
+  EXPECT_EQ(directory_contents(earlier), before);
+  // Completed with other loads: the earlier loads go, with the rest of the earlier series.
+  r = run_colza("run shear-series --quiet --force --config " + kConfig + from_packing +
+                " --set shear_box.normal_stresses=[40000] --out " + earlier.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_TRUE(fs::exists(earlier / "load-40000Pa" / "summary.json"));
+  EXPECT_FALSE(fs::exists(earlier / "load-25750Pa"));
+  EXPECT_FALSE(fs::exists(earlier / "load-78750Pa"));
+  const auto s = read_json(earlier / "summary.json");
+  ASSERT_EQ(s["loads"].size(), 1u);
+  EXPECT_EQ(s["overrides"].size(), 2u);  // the --set overrides, as given
+}
+
+TEST_F(SmallShearSeries, AnEditedSampleFileIsBadInputNamingTheFile) {
+  const fs::path stopped = scratch_dir("small-shear-edited");
+  fs::copy(out_, stopped, fs::copy_options::recursive);
+  fs::remove(stopped / "summary.json");
+  write_file(stopped / "sample.json", "{\"config_fingerprint\": ");
+  const CliResult r = run_colza("run shear-series --quiet --config " + kConfig + " --out " + stopped.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find((stopped / "sample.json").string() + ": is not valid JSON"), std::string::npos)
+      << r.stderr_text;
+}
+
 TEST(ShearBox, FrictionlessBondFreeSampleHasAMuchLowerFrictionAngle) {
   // Without particle friction and bonds, spheres roll and slide freely: the angle left
   // comes from interlocking alone and must be far below the frictional sample's. Friction
