@@ -146,27 +146,29 @@ void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>&
   r.sigma = (cov_t + cov_s + cov_r).diagonal().cwiseSqrt();
 }
 
-// A parameter whose 95 % interval +/- 2 sigma (sigma from propagate_uncertainty) is wider
-// than its whole design range is not determined by the targets: any value in the range
-// reproduces them within their uncertainty and the surfaces' error, so the solution's value
-// of it is arbitrary. One whose interval is wider than half the range is weakly determined.
-// Says so, with how much each target's surface changes across the range (|J_ij| times the
-// range, in the target's unit and in units of its uncertainty). Infinite sigma has its own
-// warning (propagate_uncertainty).
+// A parameter whose 95 % interval (x - 2 sigma .. x + 2 sigma, 4 sigma wide; sigma from
+// propagate_uncertainty) is wider than its whole design range is not determined by the
+// targets: values across the whole range reproduce them within their uncertainty and the
+// surfaces' error, so the solution's value of it is arbitrary. One whose interval is wider
+// than half the range is weakly determined. Says so, with how much each target's surface
+// changes across the range (|J_ij| times the range, in the target's unit and in units of
+// its uncertainty). Infinite sigma has its own warning (propagate_uncertainty).
 void determination_warnings(const Problem& p, CalibrationResult& r) {
   for (std::size_t j = 0; j < p.parameters.size(); ++j) {
     const Parameter& q = p.parameters[j];
     const double range = q.upper - q.lower, sigma = r.sigma[static_cast<Eigen::Index>(j)];
-    if (!std::isfinite(sigma) || 4.0 * sigma <= range) continue;
+    const double interval = 4.0 * sigma;
+    if (!std::isfinite(sigma) || interval <= 0.5 * range) continue;
     std::string effects;
     for (std::size_t i = 0; i < p.targets.size(); ++i) {
       const double change = std::abs(r.jacobian(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j))) * range;
       effects += (i ? ", " : "") + p.targets[i].name + " by " + fmt(change) + " " + p.targets[i].unit + " (" +
                  fmt(change / p.targets[i].uncertainty) + " uncertainties)";
     }
-    const bool arbitrary = 2.0 * sigma > range;
+    const bool arbitrary = interval > range;
     r.warnings.push_back(q.name + (arbitrary ? " is not determined" : " is only weakly determined") +
-                         " by these targets: +/- 2 sigma = +/- " + fmt(2.0 * sigma) + " " + q.unit + " is wider than " +
+                         " by these targets: its 95 % interval, +/- 2 sigma = +/- " + fmt(2.0 * sigma) + " " + q.unit +
+                         " (" + fmt(interval) + " " + q.unit + " wide), is wider than " +
                          (arbitrary ? "its" : "half its") + " design range " + fmt(q.lower) + " .. " + fmt(q.upper) +
                          " " + q.unit + " (across it the surfaces change " + effects + "); " +
                          (arbitrary ? "its value in the solution is arbitrary" : "its value in the solution is rough") +

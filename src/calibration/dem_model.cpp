@@ -241,6 +241,14 @@ Eigen::VectorXd DemModel::targets_from(const nlohmann::json& out, const std::str
     }
     y[i] = out[t[i].name].get<double>();
   }
+  // c1 and c2 depend on the range they are fitted over: a run that stopped below the fit
+  // range's top (fit_force_max) would give coefficients of a shorter curve.
+  if (spec_.stage == Stage::kCompression && !out.value("fit_reached_force_max", true))
+    throw CalibrationError("model.set", "DEM run " + id + " stopped below the top of the fit range (largest force " +
+                                            std::to_string(out.value("max_force", 0.0)) +
+                                            " N), so its c1 and c2 would be fitted over a shorter range: raise "
+                                            "oedometer.stop_force / max_piston_travel or lower oedometer.fit_force_max "
+                                            "in [model] set");
   return y;
 }
 
@@ -292,7 +300,7 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
   // The peak strength is read from the load curves a run keeps (peak_targets).
   const bool reads_peaks = spec_.stage == Stage::kShear && spec_.strength.peak;
   if (fs::exists(summary)) {
-    const auto s = nlohmann::json::parse(std::ifstream(summary));
+    const auto s = read_json_file(summary.string());
     // A run reuses a finished one unless the spec needs what the older run did not keep
     // (the load curves, for the peak strength): then it runs again in its place.
     if (s.value("fingerprint", "") == fp && (!reads_peaks || has_load_curves(dir))) {

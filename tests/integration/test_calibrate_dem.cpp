@@ -5,11 +5,24 @@
 // Compression: every run loads one packing settled once (the spec's oedometer.packing_file),
 // so a run costs ~0.3 s. On 117 particles c1 and c2 are CHAOTIC in the parameters (mu = 0.3
 // vs 0.30000000000000004 moves c1 by 10 %; neighbouring design points differ by 50 %), so
-// the targets carry 8-9 % uncertainty and the stated recovery tolerance is 25 % on kn_p and
-// 30 % on mu_pp (truth 420 kN/m, 0.33). This is a weak check of the loop on the DEM, not of
-// the method's accuracy (the identity-model unit tests check that); a larger sample (label
-// `full`, not written yet) is needed for a tight DEM identity test.
-// Density: each run settles (~5 s); 2 design points + validation.
+// the targets carry 8-9 % uncertainty. What this sample can show (session 15, truths on the
+// same packing, paper / sequential mode):
+//   truth (370 kN/m, 0.30): kn_p 399 / 364 kN/m, mu_pp 0.29 / 0.30
+//   truth (380 kN/m, 0.38): kn_p 413 / 418 kN/m, mu_pp 0.31 / 0.30
+//   truth (520 kN/m, 0.22): kn_p 519 / 476 kN/m, mu_pp 0.31 / 0.35
+//   truth (520 kN/m, 0.33): kn_p 546 / 500 kN/m, mu_pp 0.28 / 0.30
+//   truth (530 kN/m, 0.27): kn_p 550 / 517 kN/m, mu_pp 0.30 / 0.34
+// kn_p follows the truth; mu_pp stays near the design's 0.3 whatever the truth: the small
+// sample's curve does not determine it. So the tests assert that kn_p moves at least halfway
+// from the design's centre (450 kN/m) to the truth (520 kN/m, 0.33), which a calibration that
+// did nothing would fail, and that mu_pp is either found or colza says it was not (a
+// warning: not or weakly determined, or the validation missing the measurement). A tight
+// DEM identity test of this stage needs a larger sample (not written yet).
+// Density: each run settles (~5 s); 2 design points + validation. On 117 particles the
+// settled bulk density scatters by 3-4 % between packings (rho_p = 1290 settles denser than
+// 1300), more than the design's +/- 4 % in rho_p moves it, so this test checks the loop and
+// the reporting only; tests/full/test_calibrate_density_identity.cpp checks the recovery on
+// the full-size oedometer.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -38,7 +51,7 @@ class CalibrateCompression : public ::testing::Test {
                   .exit_code, 0);
     const std::string packing = (dir_ / "pack" / "packing.txt").string();
     ASSERT_EQ(run_colza("run oedometer --quiet --config " + kOed + " " + kLoad + "--set oedometer.packing_file='\"" +
-                        packing + "\"' --set particle.normal_stiffness=420e3 --set particle.friction=0.33 --out " +
+                        packing + "\"' --set particle.normal_stiffness=520e3 --set particle.friction=0.33 --out " +
                         (dir_ / "truth").string())
                   .exit_code, 0);
     // measured.csv in the spec's plain format: displacement (m), force (N).
@@ -70,8 +83,16 @@ fs::path CalibrateCompression::dir_;
 
 void expect_recovered(const nlohmann::json& s) {
   const double kn = s["parameters"][0]["value"].get<double>(), mu = s["parameters"][1]["value"].get<double>();
-  EXPECT_NEAR(kn, 420e3, 0.25 * 420e3) << s.dump(1);
-  EXPECT_NEAR(mu, 0.33, 0.30 * 0.33) << s.dump(1);
+  // Halfway from the design's centre to the truth at least (see the top of the file).
+  constexpr double kTruthKn = 520e3, kCentreKn = 450e3, kTruthMu = 0.33;
+  EXPECT_NEAR(kn, kTruthKn, 0.5 * (kTruthKn - kCentreKn)) << s.dump(1);
+  // mu_pp: found within twice its stated uncertainty, or colza says it is not known.
+  const std::string warnings = s["warnings"].dump();
+  const bool says_so = warnings.find("mu_pp is not determined") != std::string::npos ||
+                       warnings.find("mu_pp is only weakly determined") != std::string::npos ||
+                       warnings.find("the validation run misses the measurement") != std::string::npos;
+  EXPECT_TRUE(std::abs(mu - kTruthMu) <= 2.0 * s["parameters"][1]["uncertainty"].get<double>() || says_so)
+      << s.dump(1);
   for (const char* k : {"targets", "runs_used", "wall_seconds", "surfaces", "jacobian", "paper_design_runs"})
     EXPECT_TRUE(s.contains(k)) << k;
 }
@@ -97,7 +118,7 @@ std::string shear_spec(const std::string& high_file, const std::string& measured
 
 }  // namespace
 
-TEST_F(CalibrateCompression, PaperProcedureRecoversTheParameters) {
+TEST_F(CalibrateCompression, PaperProcedureRecoversKnAndSaysWhatItCannotTell) {
   const fs::path out = dir_ / "paper";
   const CliResult r = run_colza("calibrate compression --quiet --jobs 2 --spec " + (dir_ / "spec.toml").string() +
                                 " --out " + out.string());
@@ -119,7 +140,7 @@ TEST_F(CalibrateCompression, PaperProcedureRecoversTheParameters) {
                 .exit_code, 2);
 }
 
-TEST_F(CalibrateCompression, SequentialModeRecoversTheParameters) {
+TEST_F(CalibrateCompression, SequentialModeRecoversKnAndSaysWhatItCannotTell) {
   const fs::path out = dir_ / "sequential";
   const CliResult r = run_colza("calibrate compression --quiet --mode sequential --spec " +
                                 (dir_ / "spec.toml").string() + " --out " + out.string());
@@ -184,6 +205,16 @@ TEST_F(CalibrateCompression, BadMeasuredDataAreClearErrors) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.stderr_text.find("measured.curve"), std::string::npos) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("never reaches"), std::string::npos) << r.stderr_text;
+  // Design runs that stop (at 1200 N) below the top of the fit range (1400 N): their c1 and
+  // c2 would be fitted over a shorter range than the measurement's.
+  write_file(dir_ / "stops-short.toml",
+             std::string(spec).replace(spec.find("oedometer.stop_force=1500.0"), 27, "oedometer.stop_force=1200.0"));
+  r = run_colza("calibrate compression --spec " + (dir_ / "stops-short.toml").string() + " --out " +
+                (dir_ / "e4").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("key 'model.set'"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("stopped below the top of the fit range"), std::string::npos) << r.stderr_text;
+  EXPECT_FALSE(fs::exists(dir_ / "e4" / "summary.json"));
   // A missing file.
   write_file(dir_ / "missing.toml", std::string(spec).replace(spec.find("measured.csv"), 12, "nowhere.csv"));
   r = run_colza("calibrate compression --spec " + (dir_ / "missing.toml").string() + " --out " + (dir_ / "e2").string());
@@ -200,8 +231,10 @@ TEST_F(CalibrateCompression, BadMeasuredDataAreClearErrors) {
   EXPECT_FALSE(fs::exists(dir_ / "e1" / "summary.json"));
 }
 
-TEST(CalibrateDensity, RecoversTheParticleDensityBothModes) {
-  // Truth rho_p = 1260 kg/m^3 on the small oedometer; bulk density target +/- 1 %.
+TEST(CalibrateDensity, BothModesRunTheLoopOnASmallSample) {
+  // Truth rho_p = 1260 kg/m^3 on the small oedometer; bulk density target +/- 1 %. A check
+  // of the loop, not of the recovery (the design's centre, 1250, would pass it; see the top
+  // of the file and tests/full/test_calibrate_density_identity.cpp).
   const fs::path dir = scratch_dir("calibrate-density");
   fs::create_directories(dir);
   const std::string set = "--set oedometer.stop_force=100 --set oedometer.fit_force_max=90 ";
