@@ -43,10 +43,10 @@
 #
 # Only single-threaded YADE (-j 1) repeats itself bit for bit.
 #
-# Known residual differences (crosscheck/README.md): YADE turns the stored shear force about
-# the previous normal (dt/2 (w1 + w2) . n_old), colza about the new one; a bond broken in shear
-# while in tension gets no normal force in YADE in that step. Everything else agrees to
-# rounding in the micro scenes.
+# Differences found by the cross-check (crosscheck/README.md): YADE turns the stored shear
+# force about the previous normal (dt/2 (w1 + w2) . n_old), and a bond broken in shear while
+# in tension gets no normal force in that step; colza now does both the same way. The micro
+# scenes agree to rounding.
 import math
 import os
 import sys
