@@ -1,6 +1,7 @@
 #include "analysis/mohr_coulomb.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "core/types.hpp"
@@ -30,6 +31,20 @@ MohrCoulombFit fit_mohr_coulomb(const std::vector<double>& sigma, const std::vec
   f.cohesion = mt - f.slope * ms;
   f.friction_angle_deg = std::atan(f.slope) * 180.0 / kPi;
   f.r2 = syy > 0.0 ? sxy * sxy / (sxx * syy) : 1.0;
+  f.degrees_of_freedom = static_cast<int>(n) - 2;
+  if (f.degrees_of_freedom == 0) {
+    f.cohesion_se = f.slope_se = f.friction_angle_se_deg = std::numeric_limits<double>::quiet_NaN();
+    return f;
+  }
+  double sse = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = tau[i] - (f.cohesion + f.slope * sigma[i]);
+    sse += r * r;
+  }
+  const double s = std::sqrt(sse / f.degrees_of_freedom);
+  f.slope_se = s / std::sqrt(sxx);
+  f.cohesion_se = s * std::sqrt(1.0 / static_cast<double>(n) + ms * ms / sxx);
+  f.friction_angle_se_deg = f.slope_se / (1.0 + f.slope * f.slope) * 180.0 / kPi;
   return f;
 }
 

@@ -10,6 +10,13 @@ struct MohrCoulombFit {
   double friction_angle_deg = 0.0;  // Phi (deg) = atan(slope)
   double slope = 0.0;               // tan(Phi)
   double r2 = 0.0;                  // 1 for two loads (a line through two points)
+  // Standard errors from the scatter about the line, s^2 = sum(residual^2) / (n - 2):
+  // se(slope) = s / sqrt(Sxx), se(C) = s sqrt(1/n + mean(sigma)^2 / Sxx), se(Phi) =
+  // se(slope) / (1 + slope^2) in degrees. Zero degrees of freedom (two loads): NaN.
+  int degrees_of_freedom = 0;       // n - 2
+  double cohesion_se = 0.0;         // Pa
+  double slope_se = 0.0;            // -
+  double friction_angle_se_deg = 0.0;
 };
 
 // Needs at least two distinct normal stresses; throws std::invalid_argument otherwise.

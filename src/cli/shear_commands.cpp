@@ -230,7 +230,19 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
     s["cohesion"] = mc.cohesion;
     s["friction_angle_deg"] = mc.friction_angle_deg;
     s["r2"] = mc.r2;
-    std::printf("Mohr-Coulomb: C = %.3f kPa, Phi = %.2f deg, R^2 = %.4f\n", mc.cohesion * 1e-3, mc.friction_angle_deg, mc.r2);
+    if (mc.degrees_of_freedom > 0) {
+      s["cohesion_standard_error"] = mc.cohesion_se;
+      s["friction_angle_standard_error_deg"] = mc.friction_angle_se_deg;
+      s["degrees_of_freedom"] = mc.degrees_of_freedom;
+      std::printf("Mohr-Coulomb: C = %.3f +/- %.3f kPa, Phi = %.2f +/- %.2f deg (standard errors, %d degree(s) of "
+                  "freedom), R^2 = %.4f\n",
+                  mc.cohesion * 1e-3, mc.cohesion_se * 1e-3, mc.friction_angle_deg, mc.friction_angle_se_deg,
+                  mc.degrees_of_freedom, mc.r2);
+    } else {
+      std::printf("Mohr-Coulomb: C = %.3f kPa, Phi = %.2f deg (two loads: a line through two points, no standard "
+                  "error)\n",
+                  mc.cohesion * 1e-3, mc.friction_angle_deg);
+    }
   }
   s["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   s["jobs"] = opt.jobs;

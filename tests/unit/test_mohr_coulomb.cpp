@@ -34,6 +34,26 @@ TEST(MohrCoulomb, LeastSquaresThroughScatter) {
   EXPECT_LT(fit.r2, 1.0);
 }
 
+TEST(MohrCoulomb, StandardErrorsFromTheScatterAboutTheLine) {
+  // Worked by hand: sigma = 0, 1, 2, 3 (x 1e4 Pa), tau = 1, 3, 4, 7 (x 1e4 Pa). Means 1.5 and
+  // 3.75, Sxx = 5, Sxy = 9.5: slope 1.9, C = 0.9e4 Pa. Residuals 0.1, 0.2, -0.7, 0.4 (x 1e4),
+  // SSE = 0.70e8, s = sqrt(0.35) 1e4 = 5916.08 Pa with 2 degrees of freedom;
+  // se(slope) = s / sqrt(5e8) = 0.264575, se(C) = s sqrt(1/4 + 2.25e8 / 5e8) = 4949.75 Pa,
+  // se(Phi) = 0.264575 / (1 + 1.9^2) rad = 3.28829 deg.
+  const auto fit = fit_mohr_coulomb({0.0, 1e4, 2e4, 3e4}, {1e4, 3e4, 4e4, 7e4});
+  EXPECT_NEAR(fit.slope, 1.9, 1e-12);
+  EXPECT_NEAR(fit.cohesion, 9000.0, 1e-8);
+  EXPECT_EQ(fit.degrees_of_freedom, 2);
+  EXPECT_NEAR(fit.slope_se, 0.264575131, 1e-8);
+  EXPECT_NEAR(fit.cohesion_se, 4949.74747, 1e-4);
+  EXPECT_NEAR(fit.friction_angle_se_deg, 3.288295, 1e-5);
+  // Two loads: no degree of freedom, no standard error.
+  const auto two = fit_mohr_coulomb({1e4, 3e4}, {3e4, 7e4});
+  EXPECT_EQ(two.degrees_of_freedom, 0);
+  EXPECT_TRUE(std::isnan(two.cohesion_se));
+  EXPECT_TRUE(std::isnan(two.friction_angle_se_deg));
+}
+
 TEST(MohrCoulomb, RejectsFewerThanTwoDistinctLoads) {
   EXPECT_THROW(fit_mohr_coulomb({1.0}, {2.0}), std::invalid_argument);
   EXPECT_THROW(fit_mohr_coulomb({1.0, 1.0}, {2.0, 3.0}), std::invalid_argument);
