@@ -598,6 +598,23 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
   propagate_uncertainty(p, r.surfaces, r);
   determination_warnings(p, r);
   finish_validation(p, r, r.runs[best].y, tolerance);
+  // The search stops at the first run within the tolerance and keeps the best of several, so
+  // without a measured scatter that run's success is partly luck. One more realisation at
+  // the solution (seed + 1), which took no part in choosing it, confirms it or not.
+  if (r.within_uncertainty && p.replicates == 0 && opt.replicate_model) {
+    throw_if_interrupted();
+    r.confirmation = opt.replicate_model(r.solution, 1);
+    r.runs.push_back({r.solution, r.confirmation, "confirmation", iteration, 1});
+    if (opt.on_run) opt.on_run(r.runs.back());
+    r.confirmation_misfit = normalised_misfit(p, r.confirmation, tolerance);
+    if (r.confirmation_misfit > 1.0) {
+      r.within_uncertainty = false;
+      r.warnings.push_back("the solution's run was within the tolerance, but another realisation there (seed + 1) "
+                           "misses the measurement by " + fmt(r.confirmation_misfit) + misfit_unit(r) +
+                           ": the realisation scatter is comparable with the uncertainty; measure it ([scatter] "
+                           "replicates) or widen the uncertainty");
+    }
+  }
   if (!r.within_uncertainty) {
     // Is the target reachable at all inside the bounds (judged on the last local surfaces)?
     try {

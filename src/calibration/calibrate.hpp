@@ -89,7 +89,7 @@ class CalibrationError : public std::runtime_error {
 
 struct Run {
   Eigen::VectorXd x, y;
-  std::string role;   // "design" | "refinement" | "validation" | "replicate"
+  std::string role;   // "design" | "refinement" | "validation" | "replicate" | "confirmation"
   int iteration = 0;
   int replicate = 0;  // realisation (0: the model's own seed)
 };
@@ -106,7 +106,12 @@ struct CalibrationResult {
   Eigen::VectorXd achieved;             // the validation at the solution (paper mode with replicates: their mean)
   Eigen::VectorXd error;                // achieved - measured
   Eigen::VectorXd tolerance;            // what |error_i| was judged against (uncertainty, with scatter if measured)
-  bool within_uncertainty = false;      // |error_i| <= tolerance_i for all i
+  bool within_uncertainty = false;      // |error_i| <= tolerance_i for all i (sequential: and the confirmation)
+  // Sequential mode without replicates: another realisation (seed + 1) at the solution, run
+  // once the search has stopped within the tolerance (its best run was selected among
+  // several, so its success is partly luck); empty when not run.
+  Eigen::VectorXd confirmation;
+  double confirmation_misfit = 0.0;     // normalised misfit of the confirmation (<= 1: within)
   // Realisation scatter (Problem::replicates > 0): per-target sample std over the
   // realisations at scatter_at; empty when not measured.
   Eigen::VectorXd scatter;

@@ -49,6 +49,18 @@ nlohmann::json calibration_summary(const Problem& p, const CalibrationResult& r,
                             {"error_in_uncertainties", r.error[i] / p.targets[i].uncertainty},
                             {"tolerance", r.tolerance[i]}});
   s["within_uncertainty"] = r.within_uncertainty;
+  if (r.confirmation.size()) {
+    nlohmann::json c = {{"replicate", 1},
+                        {"misfit", r.confirmation_misfit},
+                        {"within", r.confirmation_misfit <= 1.0},
+                        {"note", "another realisation (seed + 1) at the solution, which took no part in choosing it"}};
+    c["targets"] = nlohmann::json::array();
+    for (std::size_t i = 0; i < p.targets.size(); ++i)
+      c["targets"].push_back({{"name", p.targets[i].name},
+                              {"achieved", r.confirmation[i]},
+                              {"error", r.confirmation[i] - p.targets[i].value}});
+    s["confirmation"] = c;
+  }
   if (r.scatter.size()) {
     nlohmann::json sc = {{"replicates", p.replicates},
                          {"realisations", p.replicates + 1},
@@ -213,8 +225,12 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
       << g(r.error[i], 3) << " (" << g(100.0 * r.error[i] / std::abs(p.targets[i].value), 3) << " %) | "
       << g(r.error[i] / p.targets[i].uncertainty, 3) << " | " << g(r.error[i] / r.tolerance[i], 3) << " |\n";
   o << "\nValidation " << (r.within_uncertainty ? "**within**" : "**NOT within**")
-    << (r.scatter.size() ? " the tolerance (measurement uncertainty combined with the realisation scatter).\n"
-                         : " the measurement uncertainty.\n");
+    << (r.scatter.size() ? " the tolerance (measurement uncertainty combined with the realisation scatter)"
+                         : " the measurement uncertainty");
+  if (r.confirmation.size())
+    o << "; confirmed by another realisation at the solution (seed + 1): "
+      << (r.confirmation_misfit <= 1.0 ? "within" : "NOT within") << ", misfit " << g(r.confirmation_misfit, 3);
+  o << ".\n";
   std::vector<std::string> w = ctx.extra_warnings;
   w.insert(w.end(), r.warnings.begin(), r.warnings.end());
   if (!w.empty()) {

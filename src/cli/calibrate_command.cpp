@@ -163,6 +163,9 @@ int calibrate_command(const CalibrateOptions& opt) {
       std::printf("; realisation scatter %.3g, judged against %.3g", result.scatter[i], result.tolerance[i]);
     std::printf("\n");
   }
+  if (result.confirmation.size())
+    std::printf("  confirmed by another realisation at the solution (seed + 1): %s (misfit %.3g)\n",
+                result.confirmation_misfit <= 1.0 ? "within" : "NOT within", result.confirmation_misfit);
   for (const auto& w : result.warnings) std::fprintf(stderr, "colza: warning: %s\n", w.c_str());
   return 0;
 }

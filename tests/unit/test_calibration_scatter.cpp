@@ -191,6 +191,35 @@ TEST(CalibrationScatter, SequentialModeStopsChasingTheScatter) {
   for (std::size_t k : aware.surface_points) EXPECT_NE(aware.runs[k].role, "replicate");
 }
 
+TEST(CalibrationScatter, SequentialModeConfirmsItsStopWithAnotherRealisation) {
+  // Without replicates the search stops at the first run within the uncertainty, and keeps
+  // the best of several: with scatter (std ~1.7 %) far above the uncertainty (0.5 %), a stop
+  // is a lucky draw. The confirmation, another realisation (seed + 1) at the solution, then
+  // misses, and the calibration says so instead of reporting it validated.
+  Problem p = compression_problem(0.005);
+  p.max_runs = 60;
+  const ForwardModel model = [](const Eigen::VectorXd& x) { return noisy(x, 0); };
+  const CalibrationResult lucky = calibrate_sequential(p, model, with_replicates(noisy));
+  // These draws: a run within the uncertainty after 16 runs; the confirmation misses by 2.75.
+  ASSERT_EQ(count_role(lucky, "confirmation"), 1);
+  EXPECT_GT(lucky.confirmation_misfit, 1.0);
+  EXPECT_FALSE(lucky.within_uncertainty);
+  bool warned = false;
+  for (const auto& w : lucky.warnings) warned = warned || w.find("another realisation there (seed + 1)") != std::string::npos;
+  EXPECT_TRUE(warned);
+  // A model without scatter: the confirmation agrees and the result stands.
+  const ForwardModel exact = [](const Eigen::VectorXd& x) -> Eigen::VectorXd { return kA * x + kB; };
+  const ReplicateModel exact_k = [](const Eigen::VectorXd& x, int) -> Eigen::VectorXd { return kA * x + kB; };
+  const CalibrationResult sure = calibrate_sequential(p, exact, with_replicates(exact_k));
+  EXPECT_TRUE(sure.within_uncertainty);
+  ASSERT_EQ(count_role(sure, "confirmation"), 1);
+  EXPECT_EQ(sure.runs.back().replicate, 1);
+  EXPECT_EQ((sure.runs.back().x - sure.solution).norm(), 0.0);
+  EXPECT_LE(sure.confirmation_misfit, 1.0);
+  // Without a replicate model (no seeds to vary) there is no confirmation.
+  EXPECT_EQ(count_role(calibrate_sequential(p, exact, {}), "confirmation"), 0);
+}
+
 TEST(CalibrationScatter, NoiseFreeModelGivesTheSameAnswerWithReplicates) {
   const ForwardModel exact = [](const Eigen::VectorXd& x) -> Eigen::VectorXd { return kA * x + kB; };
   const ReplicateModel exact_k = [](const Eigen::VectorXd& x, int) -> Eigen::VectorXd { return kA * x + kB; };
