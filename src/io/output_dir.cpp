@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <fstream>
 #include <stdexcept>
+#include <fcntl.h>   // open (POSIX)
 #include <signal.h>  // kill (POSIX)
 #include <unistd.h>
 
@@ -52,6 +53,20 @@ std::vector<std::string> earlier_run_outputs(const fs::path& dir) {
   return names;
 }
 
+namespace {
+
+// Flushes a file's (or a folder's entries') data to the disk, so that a rename that makes it
+// visible is not followed, after a power cut, by an empty or short file. Best effort: a
+// file system that cannot sync (EINVAL) is not an error.
+void sync_to_disk(const fs::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
+}  // namespace
+
 void write_text_atomically(const fs::path& file, const std::string& text) {
   const fs::path tmp = file.string() + ".tmp." + std::to_string(::getpid());  // two writers never share it
   {
@@ -59,6 +74,7 @@ void write_text_atomically(const fs::path& file, const std::string& text) {
     o << text;
     if (!o) throw std::runtime_error("cannot write " + tmp.string());
   }
+  sync_to_disk(tmp);
   fs::rename(tmp, file);
 }
 
@@ -118,6 +134,8 @@ void OutputStaging::commit(const std::vector<std::string>& stale) {
   // An earlier result being replaced (--force) stops looking complete before any file moves;
   // then its entries that the new result does not replace go.
   std::error_code ec;
+  for (const auto& f : files_)
+    if (fs::is_regular_file(staging_ / f, ec)) sync_to_disk(staging_ / f);  // folders synced their own
   fs::remove(dir_ / "summary.json", ec);
   for (const auto& f : stale)
     if (std::find(files_.begin(), files_.end(), f) == files_.end()) fs::remove_all(dir_ / f, ec);
@@ -126,6 +144,7 @@ void OutputStaging::commit(const std::vector<std::string>& stale) {
     fs::rename(staging_ / f, dir_ / f);
   }
   fs::remove_all(staging_);
+  sync_to_disk(dir_);  // the renames themselves
   committed_ = true;
 }
 
