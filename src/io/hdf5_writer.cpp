@@ -66,11 +66,16 @@ H5::Group ensure_group(H5::H5File& file, const std::string& path) {
   return file.openGroup(partial);
 }
 
-void write_doubles(H5::Group& g, const std::string& name, const double* data, hsize_t rows, hsize_t cols) {
+// A dataset of doubles with its unit as the string attribute "units" (none if `unit` is empty).
+void write_doubles(H5::Group& g, const std::string& name, const double* data, hsize_t rows, hsize_t cols,
+                   const std::string& unit) {
   const hsize_t dims[2] = {rows, cols};
   H5::DataSpace space(cols == 1 ? 1 : 2, dims);
   H5::DataSet ds = g.createDataSet(name, H5::PredType::NATIVE_DOUBLE, space, untimed_dataset());
   if (rows > 0) ds.write(data, H5::PredType::NATIVE_DOUBLE);
+  if (unit.empty()) return;
+  H5::StrType type(H5::PredType::C_S1, unit.size());
+  ds.createAttribute("units", type, H5::DataSpace(H5S_SCALAR)).write(type, unit);
 }
 
 }  // namespace
@@ -78,16 +83,18 @@ void write_doubles(H5::Group& g, const std::string& name, const double* data, hs
 void Hdf5Writer::write_table(const std::string& group, const Table& table) {
   H5::Group g = ensure_group(*file_, group);
   for (std::size_t k = 0; k < table.names.size(); ++k)
-    write_doubles(g, table.names[k], table.columns[k].data(), table.columns[k].size(), 1);
+    write_doubles(g, table.names[k], table.columns[k].data(), table.columns[k].size(), 1,
+                  k < table.units.size() ? table.units[k] : std::string());
 }
 
 void Hdf5Writer::write_particles(const std::string& group, const ParticleArrays& p) {
   H5::Group g = ensure_group(*file_, group);
   static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
-  write_doubles(g, "position", p.position.empty() ? nullptr : p.position[0].data(), p.size(), 3);
-  write_doubles(g, "velocity", p.velocity.empty() ? nullptr : p.velocity[0].data(), p.size(), 3);
-  write_doubles(g, "angular_velocity", p.angular_velocity.empty() ? nullptr : p.angular_velocity[0].data(), p.size(), 3);
-  write_doubles(g, "radius", p.radius.data(), p.size(), 1);
+  write_doubles(g, "position", p.position.empty() ? nullptr : p.position[0].data(), p.size(), 3, "m");
+  write_doubles(g, "velocity", p.velocity.empty() ? nullptr : p.velocity[0].data(), p.size(), 3, "m/s");
+  write_doubles(g, "angular_velocity", p.angular_velocity.empty() ? nullptr : p.angular_velocity[0].data(), p.size(), 3,
+                "rad/s");
+  write_doubles(g, "radius", p.radius.data(), p.size(), 1, "m");
 }
 
 void write_provenance(Hdf5Writer& h5, const std::string& scenario, std::uint64_t seed, const std::string& config_toml) {

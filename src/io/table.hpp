@@ -1,5 +1,6 @@
 // A column table of doubles: the in-memory form of every recorded curve. Written as CSV
-// (for people and the YADE cross-check) and as an HDF5 group (for programs).
+// (for people and the YADE cross-check; units in the README) and as an HDF5 group (for
+// programs; each column's unit is its dataset's "units" attribute).
 #pragma once
 #include <string>
 #include <vector>
@@ -8,10 +9,11 @@ namespace colza {
 
 struct Table {
   std::vector<std::string> names;
+  std::vector<std::string> units;  // per column, SI ("s", "m", "N", "Pa", "1" for counts); may be empty
   std::vector<std::vector<double>> columns;
 
-  explicit Table(std::vector<std::string> column_names = {})
-      : names(std::move(column_names)), columns(names.size()) {}
+  explicit Table(std::vector<std::string> column_names = {}, std::vector<std::string> column_units = {})
+      : names(std::move(column_names)), units(std::move(column_units)), columns(names.size()) {}
   void add_row(const std::vector<double>& row) {
     for (std::size_t k = 0; k < columns.size(); ++k) columns[k].push_back(row[k]);
   }

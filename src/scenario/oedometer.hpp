@@ -21,7 +21,7 @@ struct OedometerResult {
   double bulk_density = 0.0;          // kg/m^3 = particle mass / (cylinder area x packing height)
   SettleResult settling;
   std::size_t bonds_installed = 0;
-  Table curve{{"time", "piston_displacement", "piston_force", "contacts", "bonds"}};
+  Table curve{{"time", "piston_displacement", "piston_force", "contacts", "bonds"}, {"s", "m", "N", "1", "1"}};
   CompressionFit fit;
   double max_force = 0.0;             // N
   std::string stop_reason;            // "stop_force" or "max_piston_travel"

@@ -1,12 +1,14 @@
 #include "scenario/scene.hpp"
 
+#include <utility>
+
 #include "engine/stepper.hpp"
 #include "scenario/settling.hpp"
 
 namespace colza {
 
-std::vector<std::string> scene_columns(const std::vector<std::int64_t>& particles, std::size_t walls) {
-  std::vector<std::string> names{"step", "time"};
+Table scene_table(const std::vector<std::int64_t>& particles, std::size_t walls) {
+  std::vector<std::string> names{"step", "time"}, units{"1", "s"};
   const char* axes[3] = {"x", "y", "z"};
   // "p3_", "w0_": appended, not "p" + std::to_string(...): GCC 12 warns (-Wrestrict) falsely on that form.
   const auto prefix = [](char kind, std::int64_t index) {
@@ -15,21 +17,27 @@ std::vector<std::string> scene_columns(const std::vector<std::int64_t>& particle
     p += '_';
     return p;
   };
+  const auto add = [&](const std::string& name, const char* unit) {
+    names.push_back(name);
+    units.push_back(unit);
+  };
   for (std::int64_t k : particles) {
     const std::string p = prefix('p', k);
-    for (const char* q : {"", "v", "w", "f", "t"})
-      for (const char* a : axes) names.push_back(p + q + a);
+    const std::pair<const char*, const char*> quantities[] = {{"", "m"}, {"v", "m/s"}, {"w", "rad/s"}, {"f", "N"}, {"t", "N m"}};
+    for (const auto& [q, unit] : quantities)
+      for (const char* a : axes) add(p + q + a, unit);
   }
   for (std::size_t w = 0; w < walls; ++w) {
     const std::string p = prefix('w', static_cast<std::int64_t>(w));
-    for (const char* q : {"f", ""})
-      for (const char* a : axes) names.push_back(p + q + a);
+    const std::pair<const char*, const char*> quantities[] = {{"f", "N"}, {"", "m"}};
+    for (const auto& [q, unit] : quantities)
+      for (const char* a : axes) add(p + q + a, unit);
   }
-  for (const char* e : {"contacts", "bonds", "kinetic_energy", "gravitational_energy", "elastic_normal_energy",
-                        "elastic_shear_energy", "slip_dissipated", "damping_dissipated", "bond_break_lost", "shear_break_released",
-                        "wall_work"})
-    names.push_back(e);
-  return names;
+  for (const char* e : {"contacts", "bonds"}) add(e, "1");
+  for (const char* e : {"kinetic_energy", "gravitational_energy", "elastic_normal_energy", "elastic_shear_energy",
+                        "slip_dissipated", "damping_dissipated", "bond_break_lost", "shear_break_released", "wall_work"})
+    add(e, "J");
+  return Table(std::move(names), std::move(units));
 }
 
 SceneResult run_scene(const RunConfig& c, Progress& progress) {
@@ -47,7 +55,7 @@ SceneResult run_scene(const RunConfig& c, Progress& progress) {
       c.contact.bond_install == BondInstallMoment::kBeforeLoading)
     r.bonds_installed = install_bonds(world, c.contact.bond_gap);
   r.dt = world.dt;
-  r.series = Table(scene_columns(s.record_particles, world.walls.size()));
+  r.series = scene_table(s.record_particles, world.walls.size());
 
   StageClock clock("scene");
   progress.start_stage("scene");

@@ -20,11 +20,12 @@ struct SceneResult {
   ParticleArrays final_state;
 };
 
-// Column names of the series for the given recorded particles and wall count. Per
-// particle k: pK_{x,y,z} position x(t), pK_v{x,y,z} velocity v(t - dt/2), pK_w{x,y,z}
-// angular velocity, pK_f{x,y,z} and pK_t{x,y,z} contact force and torque of step t;
-// per wall w: wW_f{x,y,z} force exerted on it by the particles, wW_{x,y,z} its origin.
-std::vector<std::string> scene_columns(const std::vector<std::int64_t>& particles, std::size_t walls);
+// The empty series (column names and units) for the given recorded particles and wall
+// count. Per particle k: pK_{x,y,z} position x(t), pK_v{x,y,z} velocity v(t - dt/2),
+// pK_w{x,y,z} angular velocity, pK_f{x,y,z} and pK_t{x,y,z} contact force and torque of
+// step t; per wall w: wW_f{x,y,z} force exerted on it by the particles, wW_{x,y,z} its
+// origin; then contacts, bonds and the energy ledger (J).
+Table scene_table(const std::vector<std::int64_t>& particles, std::size_t walls);
 
 SceneResult run_scene(const RunConfig& config, Progress& progress);
 

@@ -40,7 +40,8 @@ struct ShearLoadResult {
   double consolidation_time = 0.0;     // s (simulated)
   std::size_t bonds_installed = 0;
   Table curve{{"time", "shear_displacement", "shear_force", "shear_stress", "normal_stress", "plate_height",
-               "dilatancy", "contacts", "bonds"}};
+               "dilatancy", "contacts", "bonds"},
+              {"s", "m", "N", "Pa", "Pa", "m", "m", "1", "1"}};
   double shear_strength = 0.0;         // Pa, mean shear stress over the strength window
   double peak_shear_stress = 0.0;      // Pa
   double mean_normal_stress = 0.0;     // Pa, during shearing

@@ -13,6 +13,9 @@
 #include "core/particles.hpp"
 #include "io/hdf5_writer.hpp"
 #include "io/table.hpp"
+#include "scenario/oedometer.hpp"
+#include "scenario/scene.hpp"
+#include "scenario/shear_box.hpp"
 
 #include "scratch_dir.hpp"
 
@@ -39,7 +42,7 @@ H5O_info_t times_of(const H5::H5File& f, const std::string& path) {
 TEST(Hdf5Writer, WritesWhatReadsBackAndNoTimes) {
   const colza::testing::ScratchDir dir;
   const auto file = dir / "result.h5";
-  Table t({"time", "force"});
+  Table t({"time", "force"}, {"s", "N"});
   t.add_row({0.0, 1.5});
   t.add_row({1e-3, -2.25});
   ParticleArrays p;
@@ -58,6 +61,17 @@ TEST(Hdf5Writer, WritesWhatReadsBackAndNoTimes) {
   EXPECT_EQ(read_doubles(f, "/particles/final/angular_velocity"),
             (std::vector<double>{0.0, 0.0, 0.0, -4.0, 5.0, -6.0}));
   EXPECT_EQ(read_doubles(f, "/particles/final/radius"), (std::vector<double>{3e-3, 3.5e-3}));
+  // Each dataset names its unit.
+  const auto unit_of = [&](const std::string& path) {
+    H5::Attribute a = f.openDataSet(path).openAttribute("units");
+    std::string u;
+    a.read(a.getStrType(), u);
+    return u;
+  };
+  EXPECT_EQ(unit_of("/curve/time"), "s");
+  EXPECT_EQ(unit_of("/curve/force"), "N");
+  EXPECT_EQ(unit_of("/particles/final/velocity"), "m/s");
+  EXPECT_EQ(unit_of("/particles/final/radius"), "m");
   std::int64_t seed = 0;
   f.openAttribute("seed").read(H5::PredType::NATIVE_INT64, &seed);
   EXPECT_EQ(seed, 7);
@@ -67,4 +81,14 @@ TEST(Hdf5Writer, WritesWhatReadsBackAndNoTimes) {
     EXPECT_EQ(info.mtime, 0) << path;
     EXPECT_EQ(info.btime, 0) << path;
   }
+}
+
+TEST(Hdf5Writer, EveryRecordedCurveHasAUnitPerColumn) {
+  const Table scene = scene_table({0, 3}, 2);
+  ASSERT_EQ(scene.units.size(), scene.names.size());
+  EXPECT_EQ(scene.units[2], "m");       // p0_x
+  EXPECT_EQ(scene.units[5], "m/s");     // p0_vx
+  EXPECT_EQ(scene.units.back(), "J");  // wall_work
+  EXPECT_EQ(OedometerResult{}.curve.units.size(), OedometerResult{}.curve.names.size());
+  EXPECT_EQ(ShearLoadResult{}.curve.units.size(), ShearLoadResult{}.curve.names.size());
 }
