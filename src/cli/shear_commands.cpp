@@ -11,6 +11,7 @@
 #include "analysis/mohr_coulomb.hpp"
 #include "cli/command_common.hpp"
 #include "core/concurrent.hpp"
+#include "core/version.hpp"
 #include "io/fingerprint.hpp"
 #include "io/hdf5_writer.hpp"
 #include "io/load_label.hpp"
@@ -188,6 +189,12 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
         load_json[k] = s;
         load_json[k]["reused"] = true;
         std::printf("  sigma %.2f kPa: reusing the finished load in %s\n", loads[k] * 1e-3, load_label(loads[k]).c_str());
+        // The fingerprint holds the config, not the code: a load another build made stands
+        // only if the physics did not change in between.
+        const std::string made_by = s.value("git_revision", "unknown");
+        if (made_by != git_revision())
+          std::fprintf(stderr, "colza: warning: %s was made by colza %s, this is %s; pass --force to run it again\n",
+                       load_label(loads[k]).c_str(), made_by.c_str(), git_revision());
         continue;
       }
     }

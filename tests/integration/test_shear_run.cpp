@@ -95,8 +95,13 @@ TEST_F(SmallShearSeries, ResumeReusesFinishedLoadsAndRefusesAFinishedSeries) {
   fs::copy(out_, resumed, fs::copy_options::recursive);
   fs::remove(resumed / "summary.json");
   fs::remove_all(resumed / "load-78750Pa");
+  // The reused load says another build of colza made it: reused, with a warning.
+  auto earlier = read_json(resumed / "load-25750Pa" / "summary.json");
+  earlier["git_revision"] = "0123abc";
+  write_file(resumed / "load-25750Pa" / "summary.json", earlier.dump());
   r = run_colza("run shear-series --quiet --config " + kConfig + " --out " + resumed.string());
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("load-25750Pa was made by colza 0123abc"), std::string::npos) << r.stderr_text;
   const auto a = read_json(out_ / "summary.json");
   const auto b = read_json(resumed / "summary.json");
   EXPECT_TRUE(b["loads"][0]["reused"].get<bool>());
