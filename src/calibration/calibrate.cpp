@@ -601,6 +601,7 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
   // The search stops at the first run within the tolerance and keeps the best of several, so
   // without a measured scatter that run's success is partly luck. One more realisation at
   // the solution (seed + 1), which took no part in choosing it, confirms it or not.
+  bool confirmation_missed = false;
   if (r.within_uncertainty && p.replicates == 0 && opt.replicate_model) {
     throw_if_interrupted();
     r.confirmation = opt.replicate_model(r.solution, 1);
@@ -609,13 +610,16 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
     r.confirmation_misfit = normalised_misfit(p, r.confirmation, tolerance);
     if (r.confirmation_misfit > 1.0) {
       r.within_uncertainty = false;
+      confirmation_missed = true;
+      const double differ = ((r.confirmation - r.achieved).array().abs() / tolerance.array()).maxCoeff();
       r.warnings.push_back("the solution's run was within the tolerance, but another realisation there (seed + 1) "
                            "misses the measurement by " + fmt(r.confirmation_misfit) + misfit_unit(r) +
-                           ": the realisation scatter is comparable with the uncertainty; measure it ([scatter] "
-                           "replicates) or widen the uncertainty");
+                           "; the two realisations differ by up to " + fmt(differ) +
+                           misfit_unit(r) + ", so the stop may have been a lucky draw: measure the realisation "
+                           "scatter ([scatter] replicates) and judge the solution against it");
     }
   }
-  if (!r.within_uncertainty) {
+  if (!r.within_uncertainty && !confirmation_missed) {
     // Is the target reachable at all inside the bounds (judged on the last local surfaces)?
     try {
       solve_on_surfaces(r.surfaces, p, lo, hi, {r.solution}, true);

@@ -300,7 +300,7 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
   // The peak strength is read from the load curves a run keeps (peak_targets).
   const bool reads_peaks = spec_.stage == Stage::kShear && spec_.strength.peak;
   if (fs::exists(summary)) {
-    const auto s = read_json_file(summary.string());
+    const auto s = read_json_file(summary.string(), "remove the run's folder to run it again");
     // A run reuses a finished one unless the spec needs what the older run did not keep
     // (the load curves, for the peak strength): then it runs again in its place.
     if (s.value("fingerprint", "") == fp && (!reads_peaks || has_load_curves(dir))) {

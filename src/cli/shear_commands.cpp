@@ -10,6 +10,7 @@
 
 #include "analysis/mohr_coulomb.hpp"
 #include "cli/command_common.hpp"
+#include "config/config_error.hpp"
 #include "core/concurrent.hpp"
 #include "core/version.hpp"
 #include "io/fingerprint.hpp"
@@ -135,6 +136,15 @@ class SeriesOutput {
   std::vector<std::string> stale_;
 };
 
+// The fingerprint holds the config, not the code: what another build made stands only if
+// the physics did not change in between.
+void warn_if_made_by_another_build(const nlohmann::json& made, const std::string& what) {
+  const std::string made_by = made.value("git_revision", "unknown");
+  if (made_by != git_revision())
+    std::fprintf(stderr, "colza: warning: reusing %s made by colza %s (this is %s); pass --force to make it again\n",
+                 what.c_str(), made_by.c_str(), git_revision());
+}
+
 }  // namespace
 
 int run_shear_series(const RunConfig& config, const RunOptions& opt) {
@@ -152,20 +162,28 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   ShearSample sample;
   bool sample_reused = false;
   const fs::path sample_info = dir / "sample.json";
-  const nlohmann::json earlier_sample =
-      !opt.force && fs::exists(sample_info) ? read_json_file(sample_info.string()) : nlohmann::json::object();
-  if (earlier_sample.value("config_fingerprint", "") == fingerprint && fs::exists(dir / "packing.txt")) {
+  const bool resumed = !opt.force && fs::exists(sample_info);
+  const nlohmann::json earlier_sample = resumed ? read_json_file(sample_info.string()) : nlohmann::json::object();
+  // An unfinished series of another configuration is not silently replaced: its loads
+  // would stay next to the new ones.
+  if (resumed && earlier_sample.value("config_fingerprint", "") != fingerprint)
+    throw ConfigError("--out " + dir.string(), "",
+                      "holds an unfinished series of another configuration (sample.json's config_fingerprint "
+                      "differs); pass --force to replace it, or choose another directory");
+  if (resumed && fs::exists(dir / "packing.txt")) {
     RunConfig from_file = c;
     from_file.shear_box.packing_file = (dir / "packing.txt").string();
     sample = prepare_shear_sample(from_file, progress);
     sample.generated = earlier_sample.value("particles_generated", sample.generated);
     sample_reused = true;
+    warn_if_made_by_another_build(earlier_sample, "the sample (packing.txt)");
   } else {
     sample = prepare_shear_sample(c, progress);
     const std::string packing = out.path("packing.txt");
     write_packing(packing + ".tmp", sample.particles);
-    fs::rename(packing + ".tmp", packing);
+    move_into_place(packing + ".tmp", packing);
     nlohmann::json info = {{"config_fingerprint", fingerprint},
+                           {"git_revision", git_revision()},
                            {"particles", sample.particles.size()},
                            {"particles_generated", sample.generated},
                            {"settling_converged", sample.settling.converged},
@@ -185,28 +203,30 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
     if (!opt.force && fs::exists(summary)) {
       const auto s = read_json_file(summary.string());
       if (s.value("config_fingerprint", "") == fingerprint && s.value("normal_stress", -1.0) == loads[k]) {
+        if (!s.contains("shear_strength") || !s["shear_strength"].is_number())
+          throw ConfigError(summary.string(), "shear_strength",
+                            "missing or not a number (the file was edited); remove the load's folder, or pass --force");
         strength[k] = s["shear_strength"].get<double>();
         load_json[k] = s;
         load_json[k]["reused"] = true;
         std::printf("  sigma %.2f kPa: reusing the finished load in %s\n", loads[k] * 1e-3, load_label(loads[k]).c_str());
-        // The fingerprint holds the config, not the code: a load another build made stands
-        // only if the physics did not change in between.
-        const std::string made_by = s.value("git_revision", "unknown");
-        if (made_by != git_revision())
-          std::fprintf(stderr, "colza: warning: %s was made by colza %s, this is %s; pass --force to run it again\n",
-                       load_label(loads[k]).c_str(), made_by.c_str(), git_revision());
+        warn_if_made_by_another_build(s, load_label(loads[k]));
         continue;
       }
     }
     todo.push_back(k);
   }
+  // Each load's folder, named before the loads run side by side (SeriesOutput::path is not
+  // thread-safe: with --force it notes the name for the final move).
+  std::vector<std::string> load_dirs(loads.size());
+  for (std::size_t k : todo) load_dirs[k] = out.path(load_label(loads[k]));
   std::mutex mutex;  // guards the per-load results and stdout
   run_concurrently(todo.size(), opt.jobs, [&](std::size_t t) {
     const std::size_t k = todo[t];
     Progress load_progress(!opt.quiet && opt.jobs <= 1);
     const ShearLoadResult r = run_shear_load(c, sample, loads[k], load_progress);
     nlohmann::json s = load_summary(c, sample, r, opt.threads);
-    OutputStaging load_out(out.path(load_label(loads[k])), true);
+    OutputStaging load_out(load_dirs[k], true);
     write_load(load_out, c, r, s);
     load_out.commit();
     std::lock_guard<std::mutex> lock(mutex);

@@ -8,6 +8,8 @@
 #include <signal.h>  // kill (POSIX)
 #include <unistd.h>
 
+#include <nlohmann/json.hpp>
+
 #include "config/config_error.hpp"
 
 namespace colza {
@@ -36,17 +38,42 @@ void check_output_dir(const fs::path& dir, bool overwrite, const std::string& un
                             "into it (files of the same name are replaced)");
 }
 
+namespace {
+
+// Whether `file` is a JSON object colza wrote with one of `keys` (its own summary.json or
+// sample.json), read without throwing.
+bool written_by_colza(const fs::path& file, std::initializer_list<const char*> keys) {
+  std::ifstream in(file);
+  if (!in) return false;
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object()) return false;
+  for (const char* k : keys)
+    if (j.contains(k)) return true;
+  return false;
+}
+
+// load-<digits>Pa, the name io/load_label.hpp gives a series' load.
+bool is_load_folder_name(const std::string& f) {
+  if (f.size() <= 7 || f.rfind("load-", 0) != 0 || f.compare(f.size() - 2, 2, "Pa") != 0) return false;
+  return f.find_first_not_of("0123456789", 5) == f.size() - 2;
+}
+
+}  // namespace
+
 std::vector<std::string> earlier_run_outputs(const fs::path& dir) {
   std::error_code ec;
   std::vector<std::string> names;
-  if (!fs::exists(dir / "summary.json", ec) && !fs::exists(dir / "sample.json", ec)) return names;
+  if (!written_by_colza(dir / "summary.json", {"colza_version"}) &&
+      !written_by_colza(dir / "sample.json", {"config_fingerprint"}))
+    return names;
   static const char* const kRunFiles[] = {"summary.json", "sample.json", "packing.txt", "curve.csv", "series.csv",
                                           "result.h5"};
   for (const char* f : kRunFiles)
     if (fs::exists(dir / f, ec)) names.push_back(f);
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string f = it->path().filename().string();
-    if (f.rfind("load-", 0) == 0 && fs::is_directory(it->path(), ec) && fs::exists(it->path() / "summary.json", ec))
+    if (is_load_folder_name(f) && fs::is_directory(it->path(), ec) &&
+        written_by_colza(it->path() / "summary.json", {"colza_version"}))
       names.push_back(f);
   }
   std::sort(names.begin(), names.end());
@@ -67,6 +94,11 @@ void sync_to_disk(const fs::path& path) {
 
 }  // namespace
 
+void move_into_place(const fs::path& tmp, const fs::path& file) {
+  sync_to_disk(tmp);
+  fs::rename(tmp, file);
+}
+
 void write_text_atomically(const fs::path& file, const std::string& text) {
   const fs::path tmp = file.string() + ".tmp." + std::to_string(::getpid());  // two writers never share it
   {
@@ -74,8 +106,7 @@ void write_text_atomically(const fs::path& file, const std::string& text) {
     o << text;
     if (!o) throw std::runtime_error("cannot write " + tmp.string());
   }
-  sync_to_disk(tmp);
-  fs::rename(tmp, file);
+  move_into_place(tmp, file);
 }
 
 namespace {
@@ -137,6 +168,9 @@ void OutputStaging::commit(const std::vector<std::string>& stale) {
   for (const auto& f : files_)
     if (fs::is_regular_file(staging_ / f, ec)) sync_to_disk(staging_ / f);  // folders synced their own
   fs::remove(dir_ / "summary.json", ec);
+  // An unfinished series' marker goes too, so that a stop in the middle of the moves never
+  // leaves the new packing.txt next to the old sample.json (which a resume would trust).
+  if (std::find(files_.begin(), files_.end(), "sample.json") != files_.end()) fs::remove(dir_ / "sample.json", ec);
   for (const auto& f : stale)
     if (std::find(files_.begin(), files_.end(), f) == files_.end()) fs::remove_all(dir_ / f, ec);
   for (const auto& f : files_) {

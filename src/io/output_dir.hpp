@@ -35,6 +35,10 @@ class OutputStaging {
   bool created_dir_ = false, committed_ = false;
 };
 
+// Syncs `tmp` to the disk and renames it to `file` (replacing it): a file written under a
+// temporary name appears complete or not at all, even after a power cut.
+void move_into_place(const std::filesystem::path& tmp, const std::filesystem::path& file);
+
 // Writes `text` to `file` under a temporary name, then renames it into place.
 void write_text_atomically(const std::filesystem::path& file, const std::string& text);
 
@@ -44,9 +48,12 @@ void write_text_atomically(const std::filesystem::path& file, const std::string&
 // accepted, to be resumed.
 void check_output_dir(const std::filesystem::path& dir, bool overwrite, const std::string& unfinished_marker = "");
 
-// The entries of an earlier `colza run` result in dir (its summary.json or sample.json,
-// packing.txt, curve.csv, series.csv, result.h5, load-* folders with a summary.json), none
-// if dir holds no such result; for OutputStaging::commit when --force replaces it.
+// The entries of an earlier `colza run` result in dir: its summary.json and sample.json,
+// packing.txt, curve.csv, series.csv, result.h5 and load-<sigma>Pa folders holding a
+// summary.json, but only if dir's summary.json or sample.json is colza's (it names
+// colza_version or config_fingerprint); none otherwise. For OutputStaging::commit when
+// --force replaces the result.
+
 std::vector<std::string> earlier_run_outputs(const std::filesystem::path& dir);
 
 }  // namespace colza

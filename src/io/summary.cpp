@@ -25,15 +25,19 @@ void write_json(const std::string& file, const nlohmann::json& value) {
   if (!out) throw std::runtime_error("cannot write " + file);
 }
 
-nlohmann::json read_json_file(const std::string& file) {
+nlohmann::json read_json_file(const std::string& file, const std::string& what_to_do) {
   std::ifstream in(file);
   if (!in) throw ConfigError(file, "", "cannot be read");
+  nlohmann::json j;
   try {
-    return nlohmann::json::parse(in);
+    j = nlohmann::json::parse(in);
   } catch (const nlohmann::json::exception& e) {
     throw ConfigError(file, "", std::string("is not valid JSON (") + e.what() +
-                                    "); colza wrote it, so it was edited or cut short: remove it, or pass --force");
+                                    "); colza wrote it, so it was edited or cut short: " + what_to_do);
   }
+  if (!j.is_object())
+    throw ConfigError(file, "", "is not a JSON object; colza wrote it, so it was edited: " + what_to_do);
+  return j;
 }
 
 }  // namespace colza

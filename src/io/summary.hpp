@@ -9,8 +9,9 @@ namespace colza {
 
 nlohmann::json stages_json(const std::vector<StageTiming>& stages);
 void write_json(const std::string& file, const nlohmann::json& value);
-// A JSON file colza wrote earlier (a summary.json, a series' sample.json). Unreadable or
-// not JSON (edited, truncated): ConfigError naming the file and what to do.
-nlohmann::json read_json_file(const std::string& file);
+// A JSON object colza wrote earlier (a summary.json, a series' sample.json). Unreadable,
+// not JSON or not an object (edited, truncated): ConfigError naming the file and ending
+// with `what_to_do`.
+nlohmann::json read_json_file(const std::string& file, const std::string& what_to_do = "remove it, or pass --force");
 
 }  // namespace colza

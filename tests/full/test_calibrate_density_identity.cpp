@@ -40,7 +40,7 @@ class CalibrateDensityIdentity : public ::testing::Test {
     dir_ = scratch_dir("calibrate-density-identity");
     fs::create_directories(dir_);
     const CliResult truth = run_colza("run oedometer --quiet --config " + source_path("data/oedometer.toml") + kLoad +
-                                      " --seed 2 --set particle.density=" + std::to_string(kTrueDensity) + " --out " +
+                                      " --seed 101 --set particle.density=" + std::to_string(kTrueDensity) + " --out " +
                                       (dir_ / "truth").string());
     ASSERT_EQ(truth.exit_code, 0) << truth.stderr_text;
     const double bulk = read_json(dir_ / "truth" / "summary.json")["bulk_density"].get<double>();

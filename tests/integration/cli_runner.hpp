@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -45,10 +46,12 @@ inline CliResult run_colza(const std::string& args) {
   return r;
 }
 
-// Starts `colza <args>` (stdout discarded), sends it SIGINT (Ctrl-C) after `delay` and
-// waits for it: its exit code (130 when the signal stopped it) and stderr. -1 if it ended
-// on a signal instead of exiting.
-inline CliResult run_colza_interrupted(const std::string& args, std::chrono::milliseconds delay) {
+// Starts `colza <args>` (stdout discarded), waits until `ready()` holds (polled every 10 ms,
+// at most `timeout`), sends it SIGINT (Ctrl-C) and waits for it: its exit code (130 when the
+// signal stopped it) and stderr; -1 if it ended on a signal instead of exiting. If colza ends
+// before `ready()`, no signal is sent and its own exit code is returned.
+inline CliResult run_colza_interrupted(const std::string& args, const std::function<bool()>& ready,
+                                       std::chrono::seconds timeout = std::chrono::seconds(120)) {
   const auto err = std::filesystem::temp_directory_path() / ("colza-stderr-" + std::to_string(::getpid()));
   const std::string cmd = std::string("exec ") + COLZA_EXECUTABLE + " " + args + " > /dev/null 2> " + err.string();
   CliResult r;
@@ -58,13 +61,32 @@ inline CliResult run_colza_interrupted(const std::string& args, std::chrono::mil
     ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
-  std::this_thread::sleep_for(delay);
-  ::kill(child, SIGINT);
   int status = 0;
-  if (::waitpid(child, &status, 0) == child && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
+  bool ended = false;
+  const auto give_up = std::chrono::steady_clock::now() + timeout;
+  while (!ready() && std::chrono::steady_clock::now() < give_up) {
+    if (::waitpid(child, &status, WNOHANG) == child) {
+      ended = true;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  if (!ended) {
+    ::kill(child, SIGINT);
+    if (::waitpid(child, &status, 0) != child) status = -1;
+  }
+  if (status >= 0 && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
   r.stderr_text = read_file(err);
   std::filesystem::remove(err);
   return r;
+}
+
+// Whether `dir` has an entry (at any depth) whose path contains `part`, e.g. a staging folder.
+inline bool has_entry_containing(const std::filesystem::path& dir, const std::string& part) {
+  std::error_code ec;
+  for (std::filesystem::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (it->path().string().find(part) != std::string::npos) return true;
+  return false;
 }
 
 // Every file under `dir` (relative path -> contents), to compare a result before and after.

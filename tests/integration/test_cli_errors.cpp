@@ -136,6 +136,22 @@ TEST(CliErrors, AFolderWithOtherFilesIsNotWrittenIntoWithoutForce) {
   EXPECT_EQ(read_file(out / "packing.txt"), "my own packing\n");
 }
 
+TEST(CliErrors, ForceReplacesOnlyColzasOwnFiles) {
+  // --force into a folder of the user's own: files of the same name are replaced, but a
+  // summary.json colza did not write does not make the user's load-* folders an earlier
+  // result to remove.
+  const fs::path out = scratch_dir("force-foreign");
+  fs::create_directories(out / "load-cases");
+  write_file(out / "summary.json", "{\"mine\": true}\n");
+  write_file(out / "load-cases" / "summary.json", "{\"mine\": true}\n");
+  write_file(out / "notes.txt", "keep\n");
+  const CliResult r = run_colza("run oedometer --quiet --force --config " + kConfig + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_TRUE(read_json(out / "summary.json").contains("colza_version"));  // replaced: the same name
+  EXPECT_EQ(read_file(out / "load-cases" / "summary.json"), "{\"mine\": true}\n");
+  EXPECT_EQ(read_file(out / "notes.txt"), "keep\n");
+}
+
 TEST(CliErrors, EmptyPackingFileIsRefusedBeforeTheRun) {
   const fs::path dir = scratch_dir("empty-packing");
   fs::create_directories(dir);
@@ -155,10 +171,11 @@ TEST(CliErrors, InterruptedRunRemovesItsPartialOutputsAndKeepsTheEarlierResult) 
   const fs::path out = scratch_dir("interrupted");
   fs::create_directories(out);
   write_file(out / "summary.json", "{\"earlier\": true}\n");
-  // The full-size oedometer takes most of a minute; 1.5 s in, it is generating or settling.
+  // The full-size oedometer takes most of a minute: stopped once its staging folder exists
+  // (it is generating or settling then).
   const CliResult r = run_colza_interrupted(
       "run oedometer --quiet --force --config " + source_path("data/oedometer.toml") + " --out " + out.string(),
-      std::chrono::milliseconds(1500));
+      [&] { return has_entry_containing(out, ".colza-partial-"); });
   EXPECT_EQ(r.exit_code, 130);
   EXPECT_NE(r.stderr_text.find("interrupted by SIGINT"), std::string::npos) << r.stderr_text;
   EXPECT_EQ(read_file(out / "summary.json"), "{\"earlier\": true}\n");

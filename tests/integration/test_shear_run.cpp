@@ -101,7 +101,7 @@ TEST_F(SmallShearSeries, ResumeReusesFinishedLoadsAndRefusesAFinishedSeries) {
   write_file(resumed / "load-25750Pa" / "summary.json", earlier.dump());
   r = run_colza("run shear-series --quiet --config " + kConfig + " --out " + resumed.string());
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
-  EXPECT_NE(r.stderr_text.find("load-25750Pa was made by colza 0123abc"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("reusing load-25750Pa made by colza 0123abc"), std::string::npos) << r.stderr_text;
   const auto a = read_json(out_ / "summary.json");
   const auto b = read_json(resumed / "summary.json");
   EXPECT_TRUE(b["loads"][0]["reused"].get<bool>());
@@ -116,22 +116,32 @@ TEST_F(SmallShearSeries, ForceReplacesTheEarlierSeriesOnlyOnceTheNewOneIsComplet
   fs::copy(out_, earlier, fs::copy_options::recursive);
   const auto before = directory_contents(earlier);
   // Stopped during its first load (100 mm of shear from the earlier sample takes many
-  // seconds): the earlier series is left exactly as it was, sample included.
+  // seconds), once the new sample.json is staged: the earlier series is left exactly as it
+  // was, sample included.
   const std::string from_packing = " --set shear_box.packing_file=" + (out_ / "packing.txt").string();
+  const auto new_sample_staged = [&] {
+    std::error_code ec;
+    for (fs::recursive_directory_iterator it(earlier, ec), end; !ec && it != end; it.increment(ec))
+      if (it->path().filename() == "sample.json" && it->path().string().find(".colza-partial-") != std::string::npos)
+        return true;
+    return false;
+  };
   CliResult r = run_colza_interrupted("run shear-series --quiet --force --config " + kConfig + from_packing +
                                           " --set shear_box.shear_displacement=0.1 --out " + earlier.string(),
-                                      std::chrono::milliseconds(1500));
+                                      new_sample_staged);
   EXPECT_EQ(r.exit_code, 130) << r.stderr_text;
   EXPECT_EQ(directory_contents(earlier), before);
-  // Completed with other loads: the earlier loads go, with the rest of the earlier series.
-  r = run_colza("run shear-series --quiet --force --config " + kConfig + from_packing +
-                " --set shear_box.normal_stresses=[40000] --out " + earlier.string());
+  // Completed with other loads, side by side: the earlier loads go, with the rest of the
+  // earlier series.
+  r = run_colza("run shear-series --quiet --force --jobs 2 --config " + kConfig + from_packing +
+                " --set shear_box.normal_stresses=[40000,50000] --out " + earlier.string());
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   EXPECT_TRUE(fs::exists(earlier / "load-40000Pa" / "summary.json"));
+  EXPECT_TRUE(fs::exists(earlier / "load-50000Pa" / "summary.json"));
   EXPECT_FALSE(fs::exists(earlier / "load-25750Pa"));
   EXPECT_FALSE(fs::exists(earlier / "load-78750Pa"));
   const auto s = read_json(earlier / "summary.json");
-  ASSERT_EQ(s["loads"].size(), 1u);
+  ASSERT_EQ(s["loads"].size(), 2u);
   EXPECT_EQ(s["overrides"].size(), 2u);  // the --set overrides, as given
 }
 
@@ -144,6 +154,26 @@ TEST_F(SmallShearSeries, AnEditedSampleFileIsBadInputNamingTheFile) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.stderr_text.find((stopped / "sample.json").string() + ": is not valid JSON"), std::string::npos)
       << r.stderr_text;
+  // Valid JSON of the wrong shape: a load's summary that is not an object.
+  fs::copy_file(out_ / "sample.json", stopped / "sample.json", fs::copy_options::overwrite_existing);
+  write_file(stopped / "load-25750Pa" / "summary.json", "[1]");
+  const CliResult shape = run_colza("run shear-series --quiet --config " + kConfig + " --out " + stopped.string());
+  EXPECT_EQ(shape.exit_code, 2);
+  EXPECT_NE(shape.stderr_text.find("load-25750Pa/summary.json: is not a JSON object"), std::string::npos)
+      << shape.stderr_text;
+}
+
+TEST_F(SmallShearSeries, AnUnfinishedSeriesOfAnotherConfigIsNotResumedOrReplacedWithoutForce) {
+  const fs::path stopped = scratch_dir("small-shear-other-config");
+  fs::copy(out_, stopped, fs::copy_options::recursive);
+  fs::remove(stopped / "summary.json");
+  const auto before = directory_contents(stopped);
+  const CliResult r = run_colza("run shear-series --quiet --config " + kConfig +
+                                " --set contact.contact_bond.normal_strength=1.2 --out " + stopped.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("holds an unfinished series of another configuration"), std::string::npos)
+      << r.stderr_text;
+  EXPECT_EQ(directory_contents(stopped), before);
 }
 
 TEST(ShearBox, FrictionlessBondFreeSampleHasAMuchLowerFrictionAngle) {

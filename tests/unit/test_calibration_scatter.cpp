@@ -204,9 +204,13 @@ TEST(CalibrationScatter, SequentialModeConfirmsItsStopWithAnotherRealisation) {
   ASSERT_EQ(count_role(lucky, "confirmation"), 1);
   EXPECT_GT(lucky.confirmation_misfit, 1.0);
   EXPECT_FALSE(lucky.within_uncertainty);
-  bool warned = false;
-  for (const auto& w : lucky.warnings) warned = warned || w.find("another realisation there (seed + 1)") != std::string::npos;
+  bool warned = false, ran_out = false;
+  for (const auto& w : lucky.warnings) {
+    warned = warned || w.find("another realisation there (seed + 1)") != std::string::npos;
+    ran_out = ran_out || w.find("raise sequential.max_runs") != std::string::npos;
+  }
   EXPECT_TRUE(warned);
+  EXPECT_FALSE(ran_out);  // it stopped within the tolerance, not for want of runs
   // A model without scatter: the confirmation agrees and the result stands.
   const ForwardModel exact = [](const Eigen::VectorXd& x) -> Eigen::VectorXd { return kA * x + kB; };
   const ReplicateModel exact_k = [](const Eigen::VectorXd& x, int) -> Eigen::VectorXd { return kA * x + kB; };
