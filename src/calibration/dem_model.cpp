@@ -11,6 +11,7 @@
 #include "analysis/mohr_coulomb.hpp"
 #include "calibration/measured_csv.hpp"
 #include "calibration/measured_shear_curve.hpp"
+#include "config/config_error.hpp"
 #include "core/concurrent.hpp"
 #include "core/version.hpp"
 #include "io/fingerprint.hpp"
@@ -239,6 +240,9 @@ Eigen::VectorXd DemModel::targets_from(const nlohmann::json& out, const std::str
                                                 "oedometer.fit_force_max in [model] set");
       throw CalibrationError("model", "DEM run " + id + " has no output " + t[i].name);
     }
+    if (!out[t[i].name].is_number())
+      throw CalibrationError("model", "DEM run " + id + ": output " + t[i].name + " is not a number (" +
+                                          out[t[i].name].dump() + "); remove the run's folder to run it again");
     y[i] = out[t[i].name].get<double>();
   }
   // c1 and c2 depend on the range they are fitted over: a run that stopped below the fit
@@ -300,7 +304,14 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
   // The peak strength is read from the load curves a run keeps (peak_targets).
   const bool reads_peaks = spec_.stage == Stage::kShear && spec_.strength.peak;
   if (fs::exists(summary)) {
-    const auto s = read_json_file(summary.string(), "remove the run's folder to run it again");
+    const std::string advice = "remove the run's folder to run it again";
+    const auto s = read_json_file(summary.string(), advice);
+    require_fields(s, summary.string(),
+                   {{"fingerprint", JsonField::kString}, {"wall_seconds", JsonField::kNumber},
+                    {"colza_revision", JsonField::kString}},
+                   advice);
+    if (s.contains("outputs") && !s["outputs"].is_object())
+      throw ConfigError(summary.string(), "outputs", "must be an object; colza wrote it, so it was edited: " + advice);
     // A run reuses a finished one unless the spec needs what the older run did not keep
     // (the load curves, for the peak strength): then it runs again in its place.
     if (s.value("fingerprint", "") == fp && (!reads_peaks || has_load_curves(dir))) {

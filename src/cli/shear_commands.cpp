@@ -1,5 +1,6 @@
 // `colza run shear` (one normal load) and `colza run shear-series` (every load of the
 // config, concurrently up to --jobs, resuming loads already finished).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -110,12 +111,21 @@ namespace {
 // or failed run leaves the earlier result as it was.
 class SeriesOutput {
  public:
-  SeriesOutput(const fs::path& dir, bool force) : dir_(dir) {
+  // `load_dirs`: the series' load folders. With --force, one that exists in dir and is not
+  // part of an earlier colza result (a user's folder) stops the series before it runs.
+  SeriesOutput(const fs::path& dir, bool force, const std::vector<std::string>& load_dirs) : dir_(dir) {
+    std::error_code ec;
     if (force) {
       stale_ = earlier_run_outputs(dir);
+      for (const auto& name : load_dirs)
+        if (fs::exists(dir / name, ec) && std::find(stale_.begin(), stale_.end(), name) == stale_.end())
+          throw ConfigError("--out " + dir.string(), "",
+                            "holds " + name + ", which is not part of an earlier colza result and which this series "
+                            "would replace; move it away and run again");
       staging_.emplace(dir, /*overwrite=*/true);
     } else {
-      fs::create_directories(dir);
+      fs::create_directories(dir, ec);
+      if (ec) throw ConfigError("--out " + dir.string(), "", "cannot create the directory: " + ec.message());
     }
   }
   std::string path(const std::string& name) { return staging_ ? staging_->path(name) : (dir_ / name).string(); }
@@ -153,7 +163,9 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   // A finished series is not overwritten without --force; an unfinished one (its
   // sample.json) is resumed.
   check_output_dir(dir, opt.force, "sample.json");
-  SeriesOutput out(dir, opt.force);
+  std::vector<std::string> load_names;
+  for (double sigma : config.shear_box.normal_stresses) load_names.push_back(load_label(sigma));
+  SeriesOutput out(dir, opt.force, load_names);
   const std::string fingerprint = config_fingerprint(config);
 
   // --- the sample, shared by all loads (reused by a resumed series) ----------------
@@ -164,13 +176,23 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   const fs::path sample_info = dir / "sample.json";
   const bool resumed = !opt.force && fs::exists(sample_info);
   const nlohmann::json earlier_sample = resumed ? read_json_file(sample_info.string()) : nlohmann::json::object();
+  if (resumed) {
+    require_fields(earlier_sample, sample_info.string(),
+                   {{"config_fingerprint", JsonField::kString, true},
+                    {"particles_generated", JsonField::kNumber},
+                    {"git_revision", JsonField::kString}});
+    if (!fs::exists(dir / "packing.txt"))
+      throw ConfigError((dir / "packing.txt").string(), "",
+                        "is missing next to sample.json: the finished loads were run on a sample that is gone; pass "
+                        "--force to start the series again");
+  }
   // An unfinished series of another configuration is not silently replaced: its loads
   // would stay next to the new ones.
   if (resumed && earlier_sample.value("config_fingerprint", "") != fingerprint)
     throw ConfigError("--out " + dir.string(), "",
                       "holds an unfinished series of another configuration (sample.json's config_fingerprint "
                       "differs); pass --force to replace it, or choose another directory");
-  if (resumed && fs::exists(dir / "packing.txt")) {
+  if (resumed) {
     RunConfig from_file = c;
     from_file.shear_box.packing_file = (dir / "packing.txt").string();
     sample = prepare_shear_sample(from_file, progress);
@@ -201,11 +223,14 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   for (std::size_t k = 0; k < loads.size(); ++k) {
     const fs::path summary = dir / load_label(loads[k]) / "summary.json";
     if (!opt.force && fs::exists(summary)) {
-      const auto s = read_json_file(summary.string());
+      const auto s = read_json_file(summary.string(), "remove the load's folder, or pass --force");
+      require_fields(s, summary.string(),
+                     {{"config_fingerprint", JsonField::kString}, {"normal_stress", JsonField::kNumber},
+                      {"shear_strength", JsonField::kNumber, true}, {"mean_normal_stress", JsonField::kNumber},
+                      {"consolidated", JsonField::kBoolean}, {"particles_outside", JsonField::kNumber},
+                      {"wall_seconds", JsonField::kNumber}, {"git_revision", JsonField::kString}},
+                     "remove the load's folder, or pass --force");
       if (s.value("config_fingerprint", "") == fingerprint && s.value("normal_stress", -1.0) == loads[k]) {
-        if (!s.contains("shear_strength") || !s["shear_strength"].is_number())
-          throw ConfigError(summary.string(), "shear_strength",
-                            "missing or not a number (the file was edited); remove the load's folder, or pass --force");
         strength[k] = s["shear_strength"].get<double>();
         load_json[k] = s;
         load_json[k]["reused"] = true;

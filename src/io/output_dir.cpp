@@ -162,28 +162,52 @@ std::string OutputStaging::path(const std::string& name) {
 void OutputStaging::commit(const std::vector<std::string>& stale) {
   // summary.json last: its presence marks a complete result.
   std::stable_partition(files_.begin(), files_.end(), [](const std::string& f) { return f != "summary.json"; });
-  // An earlier result being replaced (--force) stops looking complete before any file moves;
-  // then its entries that the new result does not replace go.
   std::error_code ec;
+  // Nothing is removed before every move is known to be possible: a file cannot replace a
+  // folder nor a folder a file (a user's file named like a load's folder, say).
+  for (const auto& f : files_) {
+    const fs::path target = dir_ / f;
+    if (!fs::exists(target, ec)) continue;
+    const bool staged_folder = fs::is_directory(staging_ / f, ec);
+    const bool is_stale = std::find(stale.begin(), stale.end(), f) != stale.end();
+    // A folder is replaced only if it belongs to the earlier result; a file of the same name
+    // is replaced (--force says so).
+    if (staged_folder != fs::is_directory(target, ec) || (staged_folder && !is_stale))
+      throw ConfigError("--out " + dir_.string(), "",
+                        "holds " + target.filename().string() + ", which is not part of an earlier colza result and "
+                            "which this result would replace; move it away and run again");
+  }
   for (const auto& f : files_)
     if (fs::is_regular_file(staging_ / f, ec)) sync_to_disk(staging_ / f);  // folders synced their own
+  // From here on the staging folder is the only whole copy of the new result: if a step
+  // fails, it is kept (and named) rather than removed with the run.
+  keep_staging_ = true;
+  const auto fail = [&](const std::string& what, const std::error_code& e) {
+    throw std::runtime_error("moving the result into " + dir_.string() + " failed (" + what + ": " + e.message() +
+                             "); the complete new result is in " + staging_.string() +
+                             ": move it out before the next run into " + dir_.string() +
+                             ", which would remove it as abandoned");
+  };
+  // An earlier result being replaced (--force) stops looking complete before any file moves
+  // (summary.json; a series' sample.json too, so that a stop in the middle never leaves the
+  // new packing.txt next to the old sample.json, which a resume would trust); then all its
+  // entries go, before the new ones move in.
   fs::remove(dir_ / "summary.json", ec);
-  // An unfinished series' marker goes too, so that a stop in the middle of the moves never
-  // leaves the new packing.txt next to the old sample.json (which a resume would trust).
   if (std::find(files_.begin(), files_.end(), "sample.json") != files_.end()) fs::remove(dir_ / "sample.json", ec);
   for (const auto& f : stale)
-    if (std::find(files_.begin(), files_.end(), f) == files_.end()) fs::remove_all(dir_ / f, ec);
+    if (fs::remove_all(dir_ / f, ec); ec) fail("removing " + f, ec);
   for (const auto& f : files_) {
-    if (fs::is_directory(dir_ / f, ec)) fs::remove_all(dir_ / f);  // rename() replaces files only
-    fs::rename(staging_ / f, dir_ / f);
+    if (fs::is_directory(dir_ / f, ec))
+      if (fs::remove_all(dir_ / f, ec); ec) fail("removing " + f, ec);  // rename() replaces files only
+    if (fs::rename(staging_ / f, dir_ / f, ec); ec) fail("moving " + f, ec);
   }
-  fs::remove_all(staging_);
+  fs::remove_all(staging_, ec);
   sync_to_disk(dir_);  // the renames themselves
   committed_ = true;
 }
 
 OutputStaging::~OutputStaging() {
-  if (committed_) return;
+  if (committed_ || keep_staging_) return;
   std::error_code ec;
   fs::remove_all(staging_, ec);
   if (created_dir_ && fs::is_empty(dir_, ec)) fs::remove(dir_, ec);

@@ -33,6 +33,7 @@ class OutputStaging {
   std::filesystem::path dir_, staging_;
   std::vector<std::string> files_;
   bool created_dir_ = false, committed_ = false;
+  bool keep_staging_ = false;  // commit() began removing the earlier result: keep the new one
 };
 
 // Syncs `tmp` to the disk and renames it to `file` (replacing it): a file written under a

@@ -40,4 +40,23 @@ nlohmann::json read_json_file(const std::string& file, const std::string& what_t
   return j;
 }
 
+void require_fields(const nlohmann::json& j, const std::string& file, std::initializer_list<JsonField> fields,
+                    const std::string& what_to_do) {
+  for (const JsonField& f : fields) {
+    if (!j.contains(f.key)) {
+      if (f.required) throw ConfigError(file, f.key, "is missing; colza wrote it, so it was edited: " + what_to_do);
+      continue;
+    }
+    const nlohmann::json& v = j[f.key];
+    const bool ok = f.kind == JsonField::kNumber   ? v.is_number()
+                    : f.kind == JsonField::kString ? v.is_string()
+                                                   : v.is_boolean();
+    if (!ok)
+      throw ConfigError(file, f.key,
+                        std::string("must be a ") +
+                            (f.kind == JsonField::kNumber ? "number" : f.kind == JsonField::kString ? "string" : "boolean") +
+                            ", got " + v.dump() + "; colza wrote it, so it was edited: " + what_to_do);
+  }
+}
+
 }  // namespace colza

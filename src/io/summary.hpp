@@ -14,4 +14,16 @@ void write_json(const std::string& file, const nlohmann::json& value);
 // with `what_to_do`.
 nlohmann::json read_json_file(const std::string& file, const std::string& what_to_do = "remove it, or pass --force");
 
+// The type a field of such a file must have (JsonField::kind) and whether it must be there.
+struct JsonField {
+  enum Kind { kNumber, kString, kBoolean };
+  const char* key;
+  Kind kind;
+  bool required = false;
+};
+// ConfigError naming the file and the key if a field is missing (when required) or of
+// another type (an edited file): what colza reads from it afterwards cannot throw.
+void require_fields(const nlohmann::json& j, const std::string& file, std::initializer_list<JsonField> fields,
+                    const std::string& what_to_do = "remove it, or pass --force");
+
 }  // namespace colza

@@ -23,6 +23,7 @@ namespace colza::testing {
 struct CliResult {
   int exit_code = -1;
   std::string stderr_text;
+  bool ready_reached = false;  // run_colza_interrupted: the signal was sent when ready() held
 };
 
 inline std::string read_file(const std::filesystem::path& p) {
@@ -47,9 +48,10 @@ inline CliResult run_colza(const std::string& args) {
 }
 
 // Starts `colza <args>` (stdout discarded), waits until `ready()` holds (polled every 10 ms,
-// at most `timeout`), sends it SIGINT (Ctrl-C) and waits for it: its exit code (130 when the
-// signal stopped it) and stderr; -1 if it ended on a signal instead of exiting. If colza ends
-// before `ready()`, no signal is sent and its own exit code is returned.
+// at most `timeout`; `ready_reached` says whether it did), sends it SIGINT (Ctrl-C) and waits
+// for it: its exit code (130 when the signal stopped it) and stderr; -1 if it ended on a
+// signal instead of exiting, or did not stop within a minute (then it is killed). If colza
+// ends before `ready()`, no signal is sent and its own exit code is returned.
 inline CliResult run_colza_interrupted(const std::string& args, const std::function<bool()>& ready,
                                        std::chrono::seconds timeout = std::chrono::seconds(120)) {
   const auto err = std::filesystem::temp_directory_path() / ("colza-stderr-" + std::to_string(::getpid()));
@@ -64,7 +66,7 @@ inline CliResult run_colza_interrupted(const std::string& args, const std::funct
   int status = 0;
   bool ended = false;
   const auto give_up = std::chrono::steady_clock::now() + timeout;
-  while (!ready() && std::chrono::steady_clock::now() < give_up) {
+  while (!(r.ready_reached = ready()) && std::chrono::steady_clock::now() < give_up) {
     if (::waitpid(child, &status, WNOHANG) == child) {
       ended = true;
       break;
@@ -72,8 +74,18 @@ inline CliResult run_colza_interrupted(const std::string& args, const std::funct
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   if (!ended) {
+    // Ctrl-C stops colza within a step; after a minute it is hung: kill it (exit_code -1).
     ::kill(child, SIGINT);
-    if (::waitpid(child, &status, 0) != child) status = -1;
+    const auto kill_at = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (::waitpid(child, &status, WNOHANG) != child) {
+      if (std::chrono::steady_clock::now() > kill_at) {
+        ::kill(child, SIGKILL);
+        ::waitpid(child, &status, 0);
+        status = -1;
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
   }
   if (status >= 0 && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
   r.stderr_text = read_file(err);

@@ -150,6 +150,12 @@ TEST(CliErrors, ForceReplacesOnlyColzasOwnFiles) {
   EXPECT_TRUE(read_json(out / "summary.json").contains("colza_version"));  // replaced: the same name
   EXPECT_EQ(read_file(out / "load-cases" / "summary.json"), "{\"mine\": true}\n");
   EXPECT_EQ(read_file(out / "notes.txt"), "keep\n");
+  // Now out holds colza's own result: --force again replaces it, yet a folder that is not a
+  // load's (load-<digits>Pa) stays, even with a summary naming colza_version.
+  write_file(out / "load-cases" / "summary.json", "{\"colza_version\": \"mine\"}\n");
+  const CliResult again = run_colza("run oedometer --quiet --force --config " + kConfig + " --out " + out.string());
+  ASSERT_EQ(again.exit_code, 0) << again.stderr_text;
+  EXPECT_EQ(read_file(out / "load-cases" / "summary.json"), "{\"colza_version\": \"mine\"}\n");
 }
 
 TEST(CliErrors, EmptyPackingFileIsRefusedBeforeTheRun) {
@@ -176,6 +182,7 @@ TEST(CliErrors, InterruptedRunRemovesItsPartialOutputsAndKeepsTheEarlierResult) 
   const CliResult r = run_colza_interrupted(
       "run oedometer --quiet --force --config " + source_path("data/oedometer.toml") + " --out " + out.string(),
       [&] { return has_entry_containing(out, ".colza-partial-"); });
+  EXPECT_TRUE(r.ready_reached);
   EXPECT_EQ(r.exit_code, 130);
   EXPECT_NE(r.stderr_text.find("interrupted by SIGINT"), std::string::npos) << r.stderr_text;
   EXPECT_EQ(read_file(out / "summary.json"), "{\"earlier\": true}\n");

@@ -129,6 +129,7 @@ TEST_F(SmallShearSeries, ForceReplacesTheEarlierSeriesOnlyOnceTheNewOneIsComplet
   CliResult r = run_colza_interrupted("run shear-series --quiet --force --config " + kConfig + from_packing +
                                           " --set shear_box.shear_displacement=0.1 --out " + earlier.string(),
                                       new_sample_staged);
+  EXPECT_TRUE(r.ready_reached);
   EXPECT_EQ(r.exit_code, 130) << r.stderr_text;
   EXPECT_EQ(directory_contents(earlier), before);
   // Completed with other loads, side by side: the earlier loads go, with the rest of the
@@ -161,6 +162,36 @@ TEST_F(SmallShearSeries, AnEditedSampleFileIsBadInputNamingTheFile) {
   EXPECT_EQ(shape.exit_code, 2);
   EXPECT_NE(shape.stderr_text.find("load-25750Pa/summary.json: is not a JSON object"), std::string::npos)
       << shape.stderr_text;
+  // A field of the wrong type.
+  fs::copy_file(out_ / "load-25750Pa" / "summary.json", stopped / "load-25750Pa" / "summary.json",
+                fs::copy_options::overwrite_existing);
+  auto sample = read_json(out_ / "sample.json");
+  sample["particles_generated"] = "many";
+  write_file(stopped / "sample.json", sample.dump());
+  const CliResult type = run_colza("run shear-series --quiet --config " + kConfig + " --out " + stopped.string());
+  EXPECT_EQ(type.exit_code, 2);
+  EXPECT_NE(type.stderr_text.find("sample.json: key 'particles_generated': must be a number"), std::string::npos)
+      << type.stderr_text;
+  // The sample the finished loads ran on is gone.
+  fs::copy_file(out_ / "sample.json", stopped / "sample.json", fs::copy_options::overwrite_existing);
+  fs::remove(stopped / "packing.txt");
+  const CliResult gone = run_colza("run shear-series --quiet --config " + kConfig + " --out " + stopped.string());
+  EXPECT_EQ(gone.exit_code, 2);
+  EXPECT_NE(gone.stderr_text.find("packing.txt: is missing next to sample.json"), std::string::npos)
+      << gone.stderr_text;
+}
+
+TEST(ShearBox, ForceDoesNotReplaceAUsersFolderNamedLikeALoad) {
+  // --force replaces an earlier colza result; a folder of the user's own that happens to be
+  // named like one of the new loads stops the series before it runs.
+  const fs::path out = scratch_dir("shear-user-folder");
+  fs::create_directories(out / "load-25750Pa");
+  write_file(out / "load-25750Pa" / "notes.txt", "mine\n");
+  const CliResult r = run_colza("run shear-series --quiet --force --config " + kConfig + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("holds load-25750Pa, which is not part of an earlier colza result"), std::string::npos)
+      << r.stderr_text;
+  EXPECT_EQ(read_file(out / "load-25750Pa" / "notes.txt"), "mine\n");
 }
 
 TEST_F(SmallShearSeries, AnUnfinishedSeriesOfAnotherConfigIsNotResumedOrReplacedWithoutForce) {
