@@ -164,6 +164,7 @@ Spec read_spec(const std::string& path) {
   } catch (const ConfigError& e) {
     throw ConfigError(path, "model", std::string("the model config does not load: ") + e.what());
   }
+  s.fixed_packing_file = s.stage == Stage::kShear ? s.base.shear_box.packing_file : s.base.oedometer.packing_file;
 
   // --- parameters and design ---------------------------------------------------------
   Problem& p = s.problem;
@@ -253,6 +254,12 @@ Spec read_spec(const std::string& path) {
   if (p.replicates == 1)
     scatter.fail("replicates", "must be 0 (off) or at least 2: one extra realisation gives a scatter with a single "
                                "degree of freedom, too unreliable to widen a tolerance with");
+  if (p.replicates > 0 && !s.fixed_packing_file.empty())
+    scatter.fail("replicates", "every run loads the packing file " + s.fixed_packing_file +
+                                   ", so another seed gives the same run and the scatter would read zero: let each run "
+                                   "settle its own sample (no packing_file" +
+                                   std::string(s.stage == Stage::kShear ? "" : ", or [model] packing = \"shared\"") +
+                                   "), or set replicates = 0");
   scatter.reject_unknown();
 
   // --- measured data -> targets ------------------------------------------------------

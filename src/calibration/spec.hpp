@@ -24,6 +24,10 @@ struct Spec {
   std::vector<std::string> model_set;  // overrides applied to every run ("key=value")
   bool shared_packing = false;      // density/compression: settle once at the design centre, load every run from it
   RunConfig base;                   // the model config as read (overrides applied), for validation and fit ranges
+  // The packing file every run loads (the config's oedometer.packing_file or
+  // shear_box.packing_file, not a shared packing): then the seed changes nothing, and another
+  // seed is the same run, not another realisation. Empty when the seed makes the sample.
+  std::string fixed_packing_file;
   Problem problem;                  // parameters, targets, design, sequential settings
   std::vector<double> loads;        // shear: normal stresses of each design run's series (Pa)
   // What the targets were derived from, for the report.

@@ -103,7 +103,17 @@ int calibrate_command(const CalibrateOptions& opt) {
   const ForwardModel model = [&dem](const Eigen::VectorXd& x) { return dem(x); };
   LoopOptions loop;
   loop.jobs = opt.jobs;
-  loop.replicate_model = [&dem](const Eigen::VectorXd& x, int replicate) { return dem.run(x, replicate); };
+  // Other realisations (seed + k) exist only when the seed makes the sample: with one packing
+  // file for every run another seed is the same run (replicates are refused by the spec then,
+  // and the sequential mode's stop cannot be confirmed).
+  if (spec.fixed_packing_file.empty())
+    loop.replicate_model = [&dem](const Eigen::VectorXd& x, int replicate) { return dem.run(x, replicate); };
+  else if (opt.mode == "sequential") {
+    spec.warnings.push_back("the sequential stop is not confirmed by another realisation: every run loads the "
+                            "packing file " + spec.fixed_packing_file + ", so another seed gives the same run; a "
+                            "lucky stop shows only as a validation that a nearby point would miss");
+    std::fprintf(stderr, "colza: warning: %s\n", spec.warnings.back().c_str());
+  }
   CalibrationResult result;
   const int code = input_errors_to_exit_code(opt, spec, [&] {
     result = opt.mode == "sequential" ? calibrate_sequential(spec.problem, model, loop)

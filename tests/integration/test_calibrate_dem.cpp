@@ -149,6 +149,12 @@ TEST_F(CalibrateCompression, SequentialModeRecoversKnAndSaysWhatItCannotTell) {
   expect_recovered(s);
   EXPECT_TRUE(s.contains("within_uncertainty"));  // not asserted true: the small sample's response is chaotic
   EXPECT_LE(s["runs_used"].get<int>(), 10);
+  // Every run loads one packing file: another seed would be the same run, so there is no
+  // confirmation run, and the calibration says so.
+  EXPECT_FALSE(s.contains("confirmation"));
+  for (const auto& run : s["runs"]) EXPECT_NE(run["role"], "confirmation");
+  EXPECT_NE(r.stderr_text.find("the sequential stop is not confirmed by another realisation"), std::string::npos)
+      << r.stderr_text;
 }
 
 TEST_F(CalibrateCompression, ASharedRunsDirectoryServesTheOtherMode) {
@@ -215,6 +221,13 @@ TEST_F(CalibrateCompression, BadMeasuredDataAreClearErrors) {
   EXPECT_NE(r.stderr_text.find("key 'model.set'"), std::string::npos) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("stopped below the top of the fit range"), std::string::npos) << r.stderr_text;
   EXPECT_FALSE(fs::exists(dir_ / "e4" / "summary.json"));
+  // Replicates of a model whose runs all load one packing file: other seeds, the same run.
+  write_file(dir_ / "replicated.toml", spec + "[scatter]\nreplicates = 2\n");
+  r = run_colza("calibrate compression --spec " + (dir_ / "replicated.toml").string() + " --out " +
+                (dir_ / "e5").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("scatter.replicates"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("another seed gives the same run"), std::string::npos) << r.stderr_text;
   // A missing file.
   write_file(dir_ / "missing.toml", std::string(spec).replace(spec.find("measured.csv"), 12, "nowhere.csv"));
   r = run_colza("calibrate compression --spec " + (dir_ / "missing.toml").string() + " --out " + (dir_ / "e2").string());
