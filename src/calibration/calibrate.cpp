@@ -46,6 +46,13 @@ Eigen::MatrixXd surfaces_jacobian(const std::vector<ResponseSurface>& s, const E
   return J;
 }
 
+// D R D: the covariance of errors with standard deviations sd and correlation R (empty:
+// independent, the diagonal).
+Eigen::MatrixXd covariance_of(const Eigen::VectorXd& sd, const Eigen::MatrixXd& correlation) {
+  if (correlation.size() == 0) return Eigen::MatrixXd(sd.array().square().matrix().asDiagonal());
+  return sd.asDiagonal() * correlation * sd.asDiagonal();
+}
+
 Eigen::VectorXd target_values(const Problem& p) {
   Eigen::VectorXd t(p.targets.size());
   for (std::size_t i = 0; i < p.targets.size(); ++i) t[i] = p.targets[i].value;
@@ -123,8 +130,11 @@ void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>&
   const bool scatter = r.scatter.size() == sig_t.size();
   const Eigen::VectorXd sig_r =
       scatter ? Eigen::VectorXd(unseen_scatter_variance(r.scatter, s).cwiseSqrt()) : Eigen::VectorXd::Zero(sig_t.size());
-  const Eigen::VectorXd w = sig_t.array().square().inverse();
-  const Eigen::MatrixXd JtW = r.jacobian.transpose() * w.asDiagonal();
+  const Eigen::MatrixXd cov_targets = covariance_of(sig_t, p.target_correlation);
+  const Eigen::MatrixXd W = p.target_correlation.size() == 0  // the solver's weights, Sigma_t^-1
+                                ? Eigen::MatrixXd(sig_t.array().square().inverse().matrix().asDiagonal())
+                                : Eigen::MatrixXd(cov_targets.inverse());
+  const Eigen::MatrixXd JtW = r.jacobian.transpose() * W;
   const Eigen::MatrixXd normal = JtW * r.jacobian;
   Eigen::MatrixXd G;
   Eigen::FullPivLU<Eigen::MatrixXd> lu(normal);
@@ -136,10 +146,10 @@ void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>&
     return;
   }
   G = lu.solve(JtW);  // dx = G dy (= J^-1 for a square system)
-  auto covariance = [&](const Eigen::VectorXd& sig) {
-    return Eigen::MatrixXd(G * sig.array().square().matrix().asDiagonal() * G.transpose());
-  };
-  const Eigen::MatrixXd cov_t = covariance(sig_t), cov_s = covariance(sig_s), cov_r = covariance(sig_r);
+  auto through_G = [&](const Eigen::MatrixXd& cov_y) { return Eigen::MatrixXd(G * cov_y * G.transpose()); };
+  const Eigen::MatrixXd cov_t = through_G(cov_targets);
+  const Eigen::MatrixXd cov_s = through_G(covariance_of(sig_s, p.model_correlation));
+  const Eigen::MatrixXd cov_r = through_G(covariance_of(sig_r, p.model_correlation));
   r.sigma_target = cov_t.diagonal().cwiseSqrt();
   r.sigma_surface = cov_s.diagonal().cwiseSqrt();
   r.sigma_scatter = cov_r.diagonal().cwiseSqrt();
@@ -266,6 +276,13 @@ void scatter_warnings(const Problem& p, CalibrationResult& r) {
 
 }  // namespace
 
+Eigen::MatrixXd line_fit_correlation(const std::vector<double>& x) {
+  double sum = 0.0, sum_sq = 0.0;
+  for (double v : x) sum += v, sum_sq += v * v;
+  const double rho = -sum / std::sqrt(static_cast<double>(x.size()) * sum_sq);
+  return (Eigen::Matrix2d() << 1.0, rho, rho, 1.0).finished();
+}
+
 double normalised_misfit(const Problem& p, const Eigen::VectorXd& y) { return normalised_misfit(p, y, target_sigmas(p)); }
 
 double normalised_misfit(const Problem& p, const Eigen::VectorXd& y, const Eigen::VectorXd& tolerance) {
@@ -300,6 +317,10 @@ void validate_problem(const Problem& p, bool sequential) {
     if (!std::isfinite(t.value)) throw CalibrationError(t.name, "the measured target is not a finite number");
     if (!(t.uncertainty > 0.0)) throw CalibrationError(t.name, "the uncertainty must be > 0");
   }
+  for (const Eigen::MatrixXd* R : {&p.target_correlation, &p.model_correlation})
+    if (R->size() != 0 && (R->rows() != static_cast<Eigen::Index>(p.targets.size()) || R->cols() != R->rows() ||
+                           Eigen::LLT<Eigen::MatrixXd>(*R).info() != Eigen::Success))
+      throw CalibrationError("targets", "a target correlation matrix must be targets x targets and positive definite");
   if (p.targets.size() < p.parameters.size())
     throw CalibrationError("targets", "fewer targets (" + std::to_string(p.targets.size()) + ") than parameters (" +
                                           std::to_string(p.parameters.size()) + "): the parameters are not determined");
@@ -337,21 +358,41 @@ Eigen::VectorXd least_squares_in_box(const std::vector<ResponseSurface>& s, cons
                                      const Problem& p, const Eigen::VectorXd& lower, const Eigen::VectorXd& upper,
                                      const std::vector<Eigen::VectorXd>& starts) {
   const ParameterScaling sc = ParameterScaling::from_bounds(p.lower(), p.upper());
-  const Eigen::VectorXd t = target_values(p), sig = target_sigmas(p);
+  const Eigen::VectorXd t = target_values(p);
   const Eigen::VectorXd ulo = sc.to_unit(lower), uhi = sc.to_unit(upper);
   const Eigen::Index m = static_cast<Eigen::Index>(which.size());
+  // Whitened residuals L^-1 (f - t), Sigma_t = L L^T over the targets `which`; with
+  // independent targets (the usual case) simply (f_i - t_i) / sigma_i.
+  const bool correlated = p.target_correlation.size() != 0;
+  const Eigen::VectorXd sig = target_sigmas(p);
+  Eigen::MatrixXd cov = Eigen::MatrixXd::Identity(m, m);
+  if (correlated) {
+    const Eigen::MatrixXd cov_all = covariance_of(sig, p.target_correlation);
+    for (Eigen::Index a = 0; a < m; ++a)
+      for (Eigen::Index b = 0; b < m; ++b)
+        cov(a, b) = cov_all(static_cast<Eigen::Index>(which[a]), static_cast<Eigen::Index>(which[b]));
+  }
+  const Eigen::LLT<Eigen::MatrixXd> chol(cov);
   auto residual = [&](const Eigen::VectorXd& u) {
     const Eigen::VectorXd x = sc.from_unit(u);
     Eigen::VectorXd r(m);
-    for (Eigen::Index k = 0; k < m; ++k) r[k] = (s[which[k]].predict(x) - t[which[k]]) / sig[which[k]];
-    return r;
+    if (!correlated) {
+      for (Eigen::Index k = 0; k < m; ++k) r[k] = (s[which[k]].predict(x) - t[which[k]]) / sig[which[k]];
+      return r;
+    }
+    for (Eigen::Index k = 0; k < m; ++k) r[k] = s[which[k]].predict(x) - t[which[k]];
+    return Eigen::VectorXd(chol.matrixL().solve(r));
   };
   auto jacobian = [&](const Eigen::VectorXd& u) {  // d r / d u
     const Eigen::VectorXd x = sc.from_unit(u);
     Eigen::MatrixXd J(m, u.size());
-    for (Eigen::Index k = 0; k < m; ++k)
-      J.row(k) = (s[which[k]].gradient(x) * (1.0 / sig[which[k]])).cwiseProduct(sc.half).transpose();
-    return J;
+    if (!correlated) {
+      for (Eigen::Index k = 0; k < m; ++k)
+        J.row(k) = (s[which[k]].gradient(x) * (1.0 / sig[which[k]])).cwiseProduct(sc.half).transpose();
+      return J;
+    }
+    for (Eigen::Index k = 0; k < m; ++k) J.row(k) = s[which[k]].gradient(x).cwiseProduct(sc.half).transpose();
+    return Eigen::MatrixXd(chol.matrixL().solve(J));
   };
   auto clamp = [&](Eigen::VectorXd u) {
     for (Eigen::Index j = 0; j < u.size(); ++j) u[j] = std::clamp(u[j], ulo[j], uhi[j]);

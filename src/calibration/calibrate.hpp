@@ -66,9 +66,23 @@ struct Problem {
   SurfaceKind surface = SurfaceKind::kAuto;
   int max_runs = 12;                              // sequential mode budget (design + refinement runs)
   int replicates = 0;                             // extra realisations (seeds) to measure the scatter; 0 = off, else >= 2
+  // Correlation matrices (targets x targets; empty: independent). Targets derived from one
+  // fit are correlated: C and tan(Phi) from one line through the same strengths
+  // (line_fit_correlation). `target_correlation` is that of the measured targets' errors,
+  // `model_correlation` that of a run's (surface residuals, realisation scatter). They enter
+  // the solver's weights (W = Sigma_t^-1) and the propagated parameter covariance; the
+  // validation still judges each target on its own tolerance.
+  Eigen::MatrixXd target_correlation;
+  Eigen::MatrixXd model_correlation;
   Eigen::VectorXd lower() const;
   Eigen::VectorXd upper() const;
 };
+
+// Correlation of the intercept and the slope of a least-squares line through points at
+// abscissae x with independent errors of equal variance: Cov = s^2 (X^T X)^-1, so
+// rho = -sum(x) / sqrt(n sum(x^2)) (-0.89 for the paper's loads 25.75 and 78.75 kPa, -0.94
+// for all four). The 2 x 2 matrix [[1, rho], [rho, 1]].
+Eigen::MatrixXd line_fit_correlation(const std::vector<double>& x);
 
 // The forward model: parameters (SI) -> targets (SI). Must be callable from several threads
 // at once (the DEM model is; the identity model is pure).

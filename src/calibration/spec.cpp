@@ -371,6 +371,11 @@ Spec read_spec(const std::string& path) {
     for (double l : s.loads)
       if (!(l > 0.0)) m.fail("loads", "normal stresses must be > 0 (Pa)");
     if (const std::string clash = loads_sharing_a_label(s.loads); !clash.empty()) m.fail("loads", clash);
+    // C and tan(Phi) come from one line through the strengths, the measured ones at the
+    // measured loads and a run's at the spec's loads: their errors are correlated
+    // (line_fit_correlation, assuming strengths of equal, independent uncertainty).
+    p.target_correlation = line_fit_correlation(sigma);
+    p.model_correlation = line_fit_correlation(s.loads);
     if (mc.cohesion < 0.0)
       s.warnings.push_back("the measured line has a negative cohesion (" + fmt(mc.cohesion) + " Pa): check the data");
   }

@@ -247,6 +247,37 @@ TEST(ResponseSurface, AutoTakesTheQuadraticOnAGridAndThePlaneOnAStar) {
   EXPECT_THROW(ResponseSurface::fit(S, ys, SurfaceKind::kQuadratic, sc2), SurfaceError);
 }
 
+TEST(CalibrationIdentity, CorrelatedTargetsOfOneLine) {
+  // C and tan(Phi) from one least-squares line through strengths of equal uncertainty at the
+  // loads: Cov = s^2 (X^T X)^-1, rho = -sum(x) / sqrt(n sum(x^2)). The paper's two loads:
+  // -104500 / sqrt(2 * 6.86463e9) = -0.891852; its four: -209000 / sqrt(4 * 1.24779e10) =
+  // -0.935505.
+  EXPECT_NEAR(line_fit_correlation({25750.0, 78750.0})(0, 1), -0.891852, 1e-6);
+  EXPECT_NEAR(line_fit_correlation({25750.0, 43500.0, 61000.0, 78750.0})(1, 0), -0.935505, 1e-6);
+  // The planes of the next test, C = -1600 + 2567 Cn + 80 Cs, tan(Phi) = 0.45 - 0.027 Cn -
+  // 0.005 Cs, uncertainties 550 Pa and 0.016, now with the two-load correlation rho: the
+  // parameter covariance is J^-1 Sigma J^-T (J square), so with det = -10.675
+  // var(Cn) = (0.005^2 550^2 + 80^2 0.016^2 + 2 (0.005)(80) rho 550 0.016) / det^2 -> 0.160137 N
+  // var(Cs) = (0.027^2 550^2 + 2567^2 0.016^2 + 2 (0.027)(2567) rho 550 0.016) / det^2 -> 2.68170 N
+  // against 0.284 and 4.09 N if the targets were independent. The solution is the same.
+  const ForwardModel model = [](const Eigen::VectorXd& x) {
+    return Eigen::Vector2d(-1600.0 + 2567.0 * x[0] + 80.0 * x[1], 0.45 - 0.027 * x[0] - 0.005 * x[1]).eval();
+  };
+  Problem p = shear_problem();
+  const Eigen::VectorXd truth = model(Eigen::Vector2d(1.8, 3.3));
+  p.targets = {{"cohesion", "Pa", truth[0], 550.0}, {"tan_phi", "-", truth[1], 0.016}};
+  const CalibrationResult independent = calibrate_paper(p, model, {});
+  p.target_correlation = p.model_correlation = line_fit_correlation({25750.0, 78750.0});
+  const CalibrationResult correlated = calibrate_paper(p, model, {});
+  EXPECT_NEAR(correlated.sigma[0], 0.160137, 1e-5);
+  EXPECT_NEAR(correlated.sigma[1], 2.68170, 1e-4);
+  EXPECT_NEAR(independent.sigma[0], 0.284, 0.001);
+  EXPECT_NEAR((correlated.solution - independent.solution).norm(), 0.0, 1e-9);
+  // A matrix of the wrong size is refused.
+  p.target_correlation = Eigen::MatrixXd::Identity(3, 3);
+  EXPECT_THROW(calibrate_paper(p, model, {}), CalibrationError);
+}
+
 TEST(CalibrationIdentity, AParameterTheTargetsHardlyFeelIsReportedAsNotDetermined) {
   // Planes close to what the full-size box gives at the paper's 30 mm protocol (session 6,
   // the five design runs of data/calibration/shear.toml): C = -1600 + 2567 Cn + 80 Cs (Pa),
