@@ -119,7 +119,8 @@ Eigen::VectorXd tolerances(const Problem& p, const Eigen::VectorXd& scatter, int
 // Fills the solution's Jacobian, predicted targets and parameter uncertainties: measurement
 // (sigma_t), surface residual (sigma_s) and, when measured, the realisation scatter the
 // surfaces do not show (unseen_scatter_variance). G is the linearisation of the solver's
-// estimator, whose weights are 1 / sigma_t^2.
+// estimator, whose weights are the inverse measurement covariance S_t^-1 (1 / sigma_t^2
+// for independent targets).
 void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>& s, CalibrationResult& r) {
   const Eigen::Index n = static_cast<Eigen::Index>(p.parameters.size());
   r.jacobian = surfaces_jacobian(s, r.solution);
@@ -131,9 +132,11 @@ void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>&
   const Eigen::VectorXd sig_r =
       scatter ? Eigen::VectorXd(unseen_scatter_variance(r.scatter, s).cwiseSqrt()) : Eigen::VectorXd::Zero(sig_t.size());
   const Eigen::MatrixXd cov_targets = covariance_of(sig_t, p.target_correlation);
-  const Eigen::MatrixXd W = p.target_correlation.size() == 0  // the solver's weights, Sigma_t^-1
+  const Eigen::VectorXd inv_sig = sig_t.array().inverse();
+  const Eigen::MatrixXd W = p.target_correlation.size() == 0  // the solver's weights, S_t^-1 = D^-1 R^-1 D^-1
                                 ? Eigen::MatrixXd(sig_t.array().square().inverse().matrix().asDiagonal())
-                                : Eigen::MatrixXd(cov_targets.inverse());
+                                : Eigen::MatrixXd(inv_sig.asDiagonal() * p.target_correlation.inverse() *
+                                                  inv_sig.asDiagonal());
   const Eigen::MatrixXd JtW = r.jacobian.transpose() * W;
   const Eigen::MatrixXd normal = JtW * r.jacobian;
   Eigen::MatrixXd G;
@@ -148,8 +151,8 @@ void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>&
   G = lu.solve(JtW);  // dx = G dy (= J^-1 for a square system)
   auto through_G = [&](const Eigen::MatrixXd& cov_y) { return Eigen::MatrixXd(G * cov_y * G.transpose()); };
   const Eigen::MatrixXd cov_t = through_G(cov_targets);
-  const Eigen::MatrixXd cov_s = through_G(covariance_of(sig_s, p.model_correlation));
-  const Eigen::MatrixXd cov_r = through_G(covariance_of(sig_r, p.model_correlation));
+  const Eigen::MatrixXd cov_s = through_G(covariance_of(sig_s, {}));
+  const Eigen::MatrixXd cov_r = through_G(covariance_of(sig_r, {}));
   r.sigma_target = cov_t.diagonal().cwiseSqrt();
   r.sigma_surface = cov_s.diagonal().cwiseSqrt();
   r.sigma_scatter = cov_r.diagonal().cwiseSqrt();
@@ -317,10 +320,10 @@ void validate_problem(const Problem& p, bool sequential) {
     if (!std::isfinite(t.value)) throw CalibrationError(t.name, "the measured target is not a finite number");
     if (!(t.uncertainty > 0.0)) throw CalibrationError(t.name, "the uncertainty must be > 0");
   }
-  for (const Eigen::MatrixXd* R : {&p.target_correlation, &p.model_correlation})
-    if (R->size() != 0 && (R->rows() != static_cast<Eigen::Index>(p.targets.size()) || R->cols() != R->rows() ||
-                           Eigen::LLT<Eigen::MatrixXd>(*R).info() != Eigen::Success))
-      throw CalibrationError("targets", "a target correlation matrix must be targets x targets and positive definite");
+  const Eigen::MatrixXd& R = p.target_correlation;
+  if (R.size() != 0 && (R.rows() != static_cast<Eigen::Index>(p.targets.size()) || R.cols() != R.rows() ||
+                        Eigen::LLT<Eigen::MatrixXd>(R).info() != Eigen::Success))
+    throw CalibrationError("targets", "the targets' correlation matrix must be targets x targets and positive definite");
   if (p.targets.size() < p.parameters.size())
     throw CalibrationError("targets", "fewer targets (" + std::to_string(p.targets.size()) + ") than parameters (" +
                                           std::to_string(p.parameters.size()) + "): the parameters are not determined");
@@ -352,8 +355,9 @@ std::vector<Eigen::VectorXd> evaluate_batch(const ForwardModel& model, const std
 namespace {
 
 // Projected Levenberg-Marquardt on the weighted residuals r_i(u) = (f_i(x(u)) - t_i) / sigma_i
-// of the targets `which`, u = (x - mid) / half the scaled parameters, clamped to
-// [lower, upper]; the best of the given starts.
+// of the targets `which` (whitened by the Cholesky factor of their covariance when they are
+// correlated), u = (x - mid) / half the scaled parameters, clamped to [lower, upper]; the
+// best of the given starts.
 Eigen::VectorXd least_squares_in_box(const std::vector<ResponseSurface>& s, const std::vector<std::size_t>& which,
                                      const Problem& p, const Eigen::VectorXd& lower, const Eigen::VectorXd& upper,
                                      const std::vector<Eigen::VectorXd>& starts) {
@@ -373,6 +377,8 @@ Eigen::VectorXd least_squares_in_box(const std::vector<ResponseSurface>& s, cons
         cov(a, b) = cov_all(static_cast<Eigen::Index>(which[a]), static_cast<Eigen::Index>(which[b]));
   }
   const Eigen::LLT<Eigen::MatrixXd> chol(cov);
+  if (chol.info() != Eigen::Success)
+    throw CalibrationError("targets", "the targets' covariance is not positive definite (their correlation is +/-1)");
   auto residual = [&](const Eigen::VectorXd& u) {
     const Eigen::VectorXd x = sc.from_unit(u);
     Eigen::VectorXd r(m);
@@ -477,7 +483,7 @@ void check_reach(const std::vector<ResponseSurface>& s, const Problem& p, const 
   throw CalibrationError(p.targets[missed[0]].name,
                          "the measured targets cannot all be reached at once: each alone is inside what the design can "
                          "reach, but " + bounds + " the best compromise (at " + point_text(p, x) +
-                             ", weighted by 1/uncertainty^2) misses " + misses +
+                             ", weighted by the inverse covariance of the measured targets) misses " + misses +
                              ". Widen or move the design range, or check the measured values and their uncertainties");
 }
 

@@ -29,8 +29,9 @@
 // in sequential.max_runs. Without them (R = 0) the scatter is unknown and taken as zero.
 //
 // Parameter uncertainty (first order): dx = G dy with G = (J^T W J)^-1 J^T W, J = dsurface/dx
-// at the solution, W = diag(1 / sigma_t^2), so cov(x) = G (S_t + S_s) G^T with
-// S_t = diag(sigma_target^2) (measurement) and S_s = diag(s_residual^2) (surface error).
+// at the solution, W = S_t^-1, so cov(x) = G (S_t + S_s) G^T with S_t = D R D the
+// measurement covariance (D = diag(sigma_target), R = Problem::target_correlation, the
+// identity when empty) and S_s = diag(s_residual^2) (surface error).
 // For as many targets as parameters G = J^-1. With a measured scatter, cov(x) gains
 // G diag(o) G^T, o the scatter the surfaces do not show (see above).
 #pragma once
@@ -66,14 +67,13 @@ struct Problem {
   SurfaceKind surface = SurfaceKind::kAuto;
   int max_runs = 12;                              // sequential mode budget (design + refinement runs)
   int replicates = 0;                             // extra realisations (seeds) to measure the scatter; 0 = off, else >= 2
-  // Correlation matrices (targets x targets; empty: independent). Targets derived from one
-  // fit are correlated: C and tan(Phi) from one line through the same strengths
-  // (line_fit_correlation). `target_correlation` is that of the measured targets' errors,
-  // `model_correlation` that of a run's (surface residuals, realisation scatter). They enter
-  // the solver's weights (W = Sigma_t^-1) and the propagated parameter covariance; the
-  // validation still judges each target on its own tolerance.
+  // Correlation of the measured targets' errors (targets x targets; empty: independent).
+  // Targets derived from one fit are correlated: C and tan(Phi) from one line through the
+  // same strengths (line_fit_correlation). It enters the solver's weights (W = S_t^-1) and
+  // the propagated measurement covariance; the surface residuals and the realisation
+  // scatter stay independent per target, and the validation judges each target on its own
+  // tolerance.
   Eigen::MatrixXd target_correlation;
-  Eigen::MatrixXd model_correlation;
   Eigen::VectorXd lower() const;
   Eigen::VectorXd upper() const;
 };

@@ -59,7 +59,6 @@ nlohmann::json calibration_summary(const Problem& p, const CalibrationResult& r,
     return rows;
   };
   if (p.target_correlation.size()) s["target_correlation"] = matrix(p.target_correlation);
-  if (p.model_correlation.size()) s["model_correlation"] = matrix(p.model_correlation);
   if (r.confirmation.size()) {
     nlohmann::json c = {{"replicate", 1},
                         {"misfit", r.confirmation_misfit},
@@ -225,11 +224,10 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
        "parameters), J the surfaces' Jacobian at the solution; target uncertainty, the surfaces' residual "
        "standard error and (when measured) the realisation scatter the surfaces do not show are propagated "
        "separately and combined in quadrature.\n";
-  if (p.target_correlation.size() == 4 && p.model_correlation.size() == 4)
-    o << "The two targets come from one fitted line, so their errors are correlated: " << g(p.target_correlation(0, 1), 3)
-      << " for the measured ones, " << g(p.model_correlation(0, 1), 3)
-      << " for a run's (least-squares line through strengths of equal uncertainty at the loads); the weights and "
-         "the propagation use the full covariances.\n";
+  if (p.target_correlation.size() == 4)
+    o << "The measured cohesion and tan(Phi) come from one line, so their errors are taken as correlated ("
+      << g(p.target_correlation(0, 1), 3) << "): the weights and the measurement's share of the uncertainty use the "
+      << "full covariance.\n";
 
   const bool mean = r.scatter.size() && r.mode == "paper";
   o << "\n## Validation against the measured data\n\n| target | measured | surface at solution | DEM at solution"

@@ -256,9 +256,9 @@ Spec read_spec(const std::string& path) {
                                "degree of freedom, too unreliable to widen a tolerance with");
   if (p.replicates > 0 && !s.fixed_packing_file.empty())
     scatter.fail("replicates", "every run loads the packing file " + s.fixed_packing_file +
-                                   ", so another seed gives the same run and the scatter would read zero: let each run "
-                                   "settle its own sample (no packing_file" +
-                                   std::string(s.stage == Stage::kShear ? "" : ", or [model] packing = \"shared\"") +
+                                   ", so another seed gives the same run and the scatter would read zero: remove the "
+                                   "packing_file (each run then settles its own sample" +
+                                   std::string(s.stage == Stage::kShear ? "" : ", or one per seed with [model] packing = \"shared\"") +
                                    "), or set replicates = 0");
   scatter.reject_unknown();
 
@@ -371,11 +371,20 @@ Spec read_spec(const std::string& path) {
     for (double l : s.loads)
       if (!(l > 0.0)) m.fail("loads", "normal stresses must be > 0 (Pa)");
     if (const std::string clash = loads_sharing_a_label(s.loads); !clash.empty()) m.fail("loads", clash);
-    // C and tan(Phi) come from one line through the strengths, the measured ones at the
-    // measured loads and a run's at the spec's loads: their errors are correlated
-    // (line_fit_correlation, assuming strengths of equal, independent uncertainty).
-    p.target_correlation = line_fit_correlation(sigma);
-    p.model_correlation = line_fit_correlation(s.loads);
+    // The measured C and tan(Phi) come from one line through the measured strengths: unless
+    // the spec gives the correlation of their errors ([measured] correlation), it is that of
+    // the line's intercept and slope for strengths of equal, independent uncertainty at the
+    // measured loads (line_fit_correlation).
+    double rho = line_fit_correlation(sigma)(0, 1);
+    s.correlation_given = m.has("correlation");
+    if (s.correlation_given) {
+      rho = m.number("correlation");
+      if (!(rho > -1.0 && rho < 1.0)) m.fail("correlation", "must lie strictly between -1 and 1, got " + fmt(rho));
+    } else if (1.0 - rho * rho < 1e-6) {
+      m.fail(source_key, "the measured normal stresses are too close together for a Mohr-Coulomb line (C and "
+                         "tan(Phi) correlate at " + fmt(rho) + ")");
+    }
+    p.target_correlation = (Eigen::Matrix2d() << 1.0, rho, rho, 1.0).finished();
     if (mc.cohesion < 0.0)
       s.warnings.push_back("the measured line has a negative cohesion (" + fmt(mc.cohesion) + " Pa): check the data");
   }

@@ -140,6 +140,11 @@ int calibrate_command(const CalibrateOptions& opt) {
       ctx.notes += (k ? ", " : " ") + format_significant(spec.loads[k], 6) + " Pa";
     ctx.notes += " from one settled sample (bond strengths do not act before loading); C and tan(Phi) from the "
                  "Mohr-Coulomb line through the shear strengths (" + spec.strength.describe() + ").";
+    ctx.notes += spec.correlation_given
+                     ? " The correlation of the measured C and tan(Phi) is the spec's ([measured] correlation)."
+                     : " The correlation of the measured C and tan(Phi) is that of a line's intercept and slope through "
+                       "strengths of equal, independent uncertainty at the measured loads; set [measured] correlation "
+                       "(0: independent) if the stated uncertainties did not come from such a fit.";
   }
   ctx.measured = measured_data_summary(spec);
   ctx.measured_section = measured_data_section(spec);

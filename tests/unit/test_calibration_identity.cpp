@@ -267,7 +267,7 @@ TEST(CalibrationIdentity, CorrelatedTargetsOfOneLine) {
   const Eigen::VectorXd truth = model(Eigen::Vector2d(1.8, 3.3));
   p.targets = {{"cohesion", "Pa", truth[0], 550.0}, {"tan_phi", "-", truth[1], 0.016}};
   const CalibrationResult independent = calibrate_paper(p, model, {});
-  p.target_correlation = p.model_correlation = line_fit_correlation({25750.0, 78750.0});
+  p.target_correlation = line_fit_correlation({25750.0, 78750.0});
   const CalibrationResult correlated = calibrate_paper(p, model, {});
   EXPECT_NEAR(correlated.sigma[0], 0.160137, 1e-5);
   EXPECT_NEAR(correlated.sigma[1], 2.68170, 1e-4);

@@ -233,10 +233,12 @@ TEST_F(MeasuredShearCurveTest, PeakStrengthSpecReadsThePeakOfEachCurve) {
   EXPECT_EQ(s.measured_curves[0].window_points, 2u);
   EXPECT_NEAR(s.problem.targets[0].value, fit_mohr_coulomb({2e4, 6e4}, {1462.5, 2462.5}).cohesion, 1e-9);
   // C and tan(Phi) of one line: correlated, by the measured loads (20, 60 kPa: -80000 /
-  // sqrt(2 * 4e9) = -0.894427) and by the runs' loads (the same two here).
+  // sqrt(2 * 4e9) = -0.894427), unless [measured] correlation says otherwise.
   ASSERT_EQ(s.problem.target_correlation.rows(), 2);
   EXPECT_NEAR(s.problem.target_correlation(0, 1), -0.894427, 1e-6);
-  EXPECT_NEAR(s.problem.model_correlation(1, 0), -0.894427, 1e-6);
+  EXPECT_NEAR(s.problem.target_correlation(1, 0), -0.894427, 1e-6);
+  const Spec given = read_spec(write("spec-rho.toml", shear_spec("correlation = 0.0\n" + curves)));
+  EXPECT_EQ(given.problem.target_correlation(0, 1), 0.0);
   // The same curves by the window (1.5 .. 3 mm): the plain mean of four rows.
   const Spec w = read_spec(write("spec2.toml", shear_spec(curves)));
   EXPECT_FALSE(w.strength.peak);
