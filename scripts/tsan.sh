@@ -26,8 +26,9 @@ log=build-tsan/tsan.log
 : >"$log"
 for threads in 2 3; do
   echo "unit tests of the threaded code, OMP_NUM_THREADS=$threads"
+  # (StartsNoJobAfterCtrlC starts threads in a forked child, which TSan does not support.)
   OMP_NUM_THREADS=$threads build-tsan/tests/colza_unit_tests \
-    --gtest_filter='ForcePaths*:ForcePartition*:IntegrationSums*:NeighbourSearch*:OncePerKey*:RunConcurrently*' \
+    --gtest_filter='ForcePaths*:ForcePartition*:IntegrationSums*:NeighbourSearch*:OncePerKey*:RunConcurrently*:-RunConcurrently.StartsNoJobAfterCtrlC' \
     >>"$log" 2>&1 || { echo "FAILED (see $log)"; exit 1; }
 done
 echo "shear series, two loads side by side (--jobs 2)"

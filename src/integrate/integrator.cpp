@@ -63,7 +63,9 @@ void integrate_range(ParticleArrays& p, const IntegratorSettings& s, double dt, 
   const double gx = s.gravity[0], gy = s.gravity[1], gz = s.gravity[2];
   double unbalanced_sum = 0.0, max_unbalanced = r.max_unbalanced, damping_work = 0.0;
   std::size_t free_count = 0;
-  const auto [position, velocity, spin, force, torque, mass, inertia, fixed] = flat_state(p);
+  // Not a structured binding: clang (the ThreadSanitizer build) cannot capture one in the
+  // OpenMP simd region below.
+  const FlatState st = flat_state(p);
   alignas(64) double unbalanced[kBlock];
   alignas(64) double work[6][kBlock];  // damping work terms in the order they are summed
   for (std::size_t block = begin; block < end; block += kBlock) {
@@ -71,14 +73,14 @@ void integrate_range(ParticleArrays& p, const IntegratorSettings& s, double dt, 
 #pragma omp simd
     for (std::size_t k = 0; k < count; ++k) {
       const std::size_t i = block + k;
-      const bool is_fixed = fixed[i] != 0;
-      const double m = mass[i], in = inertia[i];
+      const bool is_fixed = st.fixed[i] != 0;
+      const double m = st.mass[i], in = st.inertia[i];
       const double inv_m = 1.0 / m, inv_i = 1.0 / in;
-      const double load[3] = {force[3 * i] + m * gx, force[3 * i + 1] + m * gy, force[3 * i + 2] + m * gz};
+      const double load[3] = {st.force[3 * i] + m * gx, st.force[3 * i + 1] + m * gy, st.force[3 * i + 2] + m * gz};
       unbalanced[k] = std::sqrt((load[0] * load[0] + load[1] * load[1]) + load[2] * load[2]);
 #pragma GCC unroll 3
       for (int d = 0; d < 3; ++d) {
-        const double v = velocity[3 * i + d], w = spin[3 * i + d], t = torque[3 * i + d];
+        const double v = st.velocity[3 * i + d], w = st.spin[3 * i + d], t = st.torque[3 * i + d];
         const double a = damped_acceleration<kForm>(load[d], v, inv_m, alpha, dt);
         const double v_new = v + dt * a;
         // Work of the damping force over the step, with the mean of the two mid-step velocities.
@@ -88,14 +90,14 @@ void integrate_range(ParticleArrays& p, const IntegratorSettings& s, double dt, 
         work[2 * d + 1][k] = (alpha_w - t * inv_i) * in * 0.5 * (w + w_new) * dt;
         // A fixed particle keeps its prescribed velocity.
         const double v_next = is_fixed ? v : v_new;
-        velocity[3 * i + d] = v_next;
-        spin[3 * i + d] = is_fixed ? w : w_new;
-        position[3 * i + d] += dt * v_next;
+        st.velocity[3 * i + d] = v_next;
+        st.spin[3 * i + d] = is_fixed ? w : w_new;
+        st.position[3 * i + d] += dt * v_next;
       }
     }
     if constexpr (!kUnbalanced && !kWork) continue;
     for (std::size_t k = 0; k < count; ++k) {  // particle order
-      if (fixed[block + k]) {
+      if (st.fixed[block + k]) {
         if (kUnbalanced && unbalanced_out) unbalanced_out[block + k] = 0.0;
         continue;
       }
@@ -126,15 +128,17 @@ void move_range(ParticleArrays& p, const IntegratorSettings& s, double dt, std::
   constexpr std::size_t kBlock = 64;  // particles
   const double alpha = s.damping;
   const double gravity[3] = {s.gravity[0], s.gravity[1], s.gravity[2]};
-  const auto [position, velocity, spin, force, torque, mass, inertia, fixed] = flat_state(p);
+  // Not a structured binding: clang (the ThreadSanitizer build) cannot capture one in the
+  // OpenMP simd region below.
+  const FlatState st = flat_state(p);
   // Per component of the block: weight m g_d (N), 1/m, 1/I, and 1.0 for a fixed particle.
   alignas(64) double weight[3 * kBlock], inv_m[3 * kBlock], inv_i[3 * kBlock], is_fixed[3 * kBlock];
   for (std::size_t block = begin; block < end; block += kBlock) {
     const std::size_t count = std::min(kBlock, end - block);
     for (std::size_t k = 0; k < count; ++k) {
       const std::size_t i = block + k;
-      const double m = mass[i], mobility = 1.0 / m, spin_mobility = 1.0 / inertia[i];
-      const double f = fixed[i] != 0 ? 1.0 : 0.0;
+      const double m = st.mass[i], mobility = 1.0 / m, spin_mobility = 1.0 / st.inertia[i];
+      const double f = st.fixed[i] != 0 ? 1.0 : 0.0;
       for (int d = 0; d < 3; ++d) {
         weight[3 * k + d] = m * gravity[d];
         inv_m[3 * k + d] = mobility;
@@ -143,11 +147,11 @@ void move_range(ParticleArrays& p, const IntegratorSettings& s, double dt, std::
       }
     }
     const std::size_t n = 3 * count;
-    double* x = position + 3 * block;
-    double* v_of = velocity + 3 * block;
-    double* w_of = spin + 3 * block;
-    const double* f_of = force + 3 * block;
-    const double* t_of = torque + 3 * block;
+    double* x = st.position + 3 * block;
+    double* v_of = st.velocity + 3 * block;
+    double* w_of = st.spin + 3 * block;
+    const double* f_of = st.force + 3 * block;
+    const double* t_of = st.torque + 3 * block;
 #pragma omp simd
     for (std::size_t k = 0; k < n; ++k) {
       const double load = f_of[k] + weight[k];
