@@ -130,6 +130,7 @@ def read_config(path, scenario):
     cb = k.get("contact_bond", {})
     c["contact"] = {
         "stiffness_rule": k.get("stiffness_rule", "series"),
+        "wall_friction": k.get("wall_friction", "own"),
         "normal": k.get("normal", "linear"),
         "tangential": k.get("tangential", "coulomb"),
         "bond": bond,
@@ -256,7 +257,9 @@ class Model:
             self.ks_pw = combine_stiffness(part["shear_stiffness"], wall["shear_stiffness"], rule)
         else:  # colza: the wall's numbers are the contact's
             self.kn_pw, self.ks_pw = wall["normal_stiffness"], wall["shear_stiffness"]
-        self.mu_pw = wall["friction"]
+        # contact.wall_friction: "own" uses mu_pw as is (physics.md), "min" takes
+        # min(mu_pp, mu_pw), PFC3D 4's rule (colza's WallFrictionRule).
+        self.mu_pw = wall["friction"] if contact["wall_friction"] == "own" else min(part["friction"], wall["friction"])
         self.density = part["density"]
         self.materials = {}   # radius -> material id
         self.particles = []   # body ids, in colza's order

@@ -16,6 +16,7 @@ nlohmann::json common_summary(const RunConfig& c, const std::string& scenario, i
           {"seed", c.seed},
           {"threads", threads},
           {"stiffness_rule", to_string(c.stiffness_rule)},
+          {"wall_friction", to_string(c.wall_friction)},
           {"contact_model", describe(c.contact)},
           {"damping", c.integration.damping},
           {"damping_form", to_string(c.integration.damping_form)},

@@ -229,6 +229,8 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
   const ConfigNode contact = root.table("contact");
   c.stiffness_rule = contact.choice("stiffness_rule", "series", {"series", "contact"}) == "series"
                          ? StiffnessRule::kSeries : StiffnessRule::kContact;
+  c.wall_friction = contact.choice("wall_friction", "own", {"own", "min"}) == "own" ? WallFrictionRule::kOwn
+                                                                                    : WallFrictionRule::kMinimum;
   c.contact = read_contact_model(contact);
   c.integration = read_integration(root.table("integration"));
   if (scenario == Scenario::kOedometer) {
@@ -274,6 +276,7 @@ PhysicsSettings make_physics(const RunConfig& c) {
       {"seed", c.particle.density, c.particle.normal_stiffness, c.particle.shear_stiffness, c.particle.friction});
   ph.wall_materials.push_back({"wall", c.wall.normal_stiffness, c.wall.shear_stiffness, c.wall.friction});
   ph.stiffness_rule = c.stiffness_rule;
+  ph.wall_friction = c.wall_friction;
   ph.model = c.contact;
   ph.integrator.damping = c.integration.damping;
   ph.integrator.damping_form = c.integration.damping_form;

@@ -111,6 +111,7 @@ struct RunConfig {
   WallSpec wall;
   ContactModel contact;
   StiffnessRule stiffness_rule = StiffnessRule::kSeries;
+  WallFrictionRule wall_friction = WallFrictionRule::kOwn;  // contact.wall_friction
   IntegrationSpec integration;
   SampleSpec sample;
   OedometerSpec oedometer;

@@ -15,6 +15,14 @@ enum class StiffnessRule {
 };
 const char* to_string(StiffnessRule rule);
 
+// The friction coefficient of a particle-wall contact (physics.md section 2, "Friction").
+enum class WallFrictionRule {
+  kOwn,      // the wall's mu_pw, as physics.md states (the paper lists mu_pw as a parameter)
+  kMinimum,  // min(mu_pp, mu_pw): PFC3D 4's rule at every contact, walls included; with Table 1
+             // (0.20, 0.23) the paper's own PFC runs would have had 0.20 at the walls
+};
+const char* to_string(WallFrictionRule rule);
+
 struct ParticleMaterial {
   std::string name;
   double density = 0.0;   // kg/m^3
@@ -27,7 +35,7 @@ struct WallMaterial {
   std::string name;
   double kn = 0.0;        // N/m
   double ks = 0.0;        // N/m
-  double friction = 0.0;  // particle-wall friction coefficient mu_pw (-), used as is
+  double friction = 0.0;  // particle-wall friction coefficient mu_pw (-), see WallFrictionRule
 };
 
 // Everything the contact law needs to know about one pair of entities.
@@ -40,16 +48,18 @@ struct PairParameters {
 double combine_stiffness(double k1, double k2, StiffnessRule rule);
 
 // Particle-particle: stiffness by the rule, friction = min(mu1, mu2) (PFC's rule; equal for
-// one seed material). Particle-wall: stiffness by the rule, friction = the wall's mu_pw.
+// one seed material). Particle-wall: stiffness by the rule, friction by `friction_rule` (the
+// wall's mu_pw, or min(mu_pp, mu_pw)).
 PairParameters particle_pair(const ParticleMaterial& a, const ParticleMaterial& b, StiffnessRule rule);
-PairParameters particle_wall_pair(const ParticleMaterial& p, const WallMaterial& w, StiffnessRule rule);
+PairParameters particle_wall_pair(const ParticleMaterial& p, const WallMaterial& w, StiffnessRule rule,
+                                  WallFrictionRule friction_rule = WallFrictionRule::kOwn);
 
 // Precomputed table of pair parameters, indexed by material indices.
 class PairTable {
  public:
   PairTable() = default;
   PairTable(const std::vector<ParticleMaterial>& particles, const std::vector<WallMaterial>& walls,
-            StiffnessRule rule);
+            StiffnessRule rule, WallFrictionRule wall_friction = WallFrictionRule::kOwn);
   // Arguments are MATERIAL indices (ParticleArrays::material, Wall::material), not body indices.
   const PairParameters& particle_particle(std::size_t a, std::size_t b) const {
     assert(a < n_particle_ && b < n_particle_);

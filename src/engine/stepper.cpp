@@ -23,7 +23,7 @@ namespace colza {
 
 Stepper::Stepper(PhysicsSettings physics)
     : physics_(std::move(physics)),
-      pairs_(physics_.particle_materials, physics_.wall_materials, physics_.stiffness_rule),
+      pairs_(physics_.particle_materials, physics_.wall_materials, physics_.stiffness_rule, physics_.wall_friction),
       neighbours_(physics_.skin) {}
 
 void Stepper::prepare(World& world) {

@@ -26,6 +26,7 @@ struct PhysicsSettings {
   std::vector<ParticleMaterial> particle_materials;
   std::vector<WallMaterial> wall_materials;
   StiffnessRule stiffness_rule = StiffnessRule::kSeries;
+  WallFrictionRule wall_friction = WallFrictionRule::kOwn;
   ContactModel model;
   IntegratorSettings integrator;
   TimeStepSettings time_step;

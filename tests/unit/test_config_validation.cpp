@@ -73,6 +73,7 @@ TEST(ConfigValidation, OtherRangeAndChoiceErrors) {
   EXPECT_EQ(oedometer_error("[integration]\ntime_step = -1e-6\n").key(), "integration.time_step");
   EXPECT_EQ(oedometer_error("[integration]\ngravity = [0.0, -9.81]\n").key(), "integration.gravity");
   EXPECT_EQ(oedometer_error("[contact]\nstiffness_rule = \"parallel\"\n").key(), "contact.stiffness_rule");
+  EXPECT_EQ(oedometer_error("[contact]\nwall_friction = \"pfc\"\n").key(), "contact.wall_friction");
   EXPECT_EQ(oedometer_error("[contact]\nbond = \"glue\"\n").key(), "contact.bond");
   EXPECT_EQ(oedometer_error("[contact.contact_bond]\nnormal_strength = -1.0\n[contact]\nbond = \"contact_bond\"\n").key(),
             "contact.contact_bond.normal_strength");
@@ -275,4 +276,14 @@ TEST(ConfigDefaults, MakePhysicsCarriesTheNumbers) {
   EXPECT_EQ(std::get<ContactBond>(ph.model.bond).shear_strength, 3.2);
   EXPECT_EQ(ph.model.bond_install, BondInstallMoment::kBeforeLoading);
   EXPECT_EQ(ph.skin, 0.5e-3);
+}
+
+TEST(ConfigValidation, WallFrictionRule) {
+  // Default: the wall's own mu_pw (physics.md); "min": PFC3D 4's min(mu_pp, mu_pw).
+  EXPECT_EQ(read_run_config(Scenario::kOedometer, ConfigReader::from_string("", "a.toml")).wall_friction,
+            WallFrictionRule::kOwn);
+  const RunConfig c =
+      read_run_config(Scenario::kOedometer, ConfigReader::from_string("[contact]\nwall_friction = \"min\"\n", "b.toml"));
+  EXPECT_EQ(c.wall_friction, WallFrictionRule::kMinimum);
+  EXPECT_EQ(make_physics(c).wall_friction, WallFrictionRule::kMinimum);
 }

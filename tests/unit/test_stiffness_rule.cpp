@@ -75,6 +75,23 @@ TEST(StiffnessRule, PairTableSeriesAndFriction) {
   EXPECT_NEAR(t.particle_wall(1, 1).kn, 384.0 * 1311.0 / 1695.0 * 1e3, 1e-9);
   EXPECT_EQ(t.particle_wall(1, 1).friction, 0.5);
   EXPECT_EQ(t.particle_wall(0, 1).friction, 0.5);
+  // contact.wall_friction = "min": PFC3D 4's rule at walls too, min(mu_pp, mu_pw); the
+  // stiffnesses do not change.
+  const PairTable m(ps, ws, StiffnessRule::kSeries, WallFrictionRule::kMinimum);
+  EXPECT_EQ(m.particle_wall(0, 0).friction, 0.20);  // Table 1: min(0.20, 0.23)
+  EXPECT_EQ(m.particle_wall(1, 1).friction, 0.34);  // min(0.34, 0.5)
+  EXPECT_EQ(m.particle_wall(0, 1).friction, 0.20);
+  EXPECT_EQ(m.particle_wall(1, 0).friction, 0.23);  // min(0.34, 0.23): the wall's is smaller
+  EXPECT_EQ(m.particle_wall(0, 0).kn, t.particle_wall(0, 0).kn);
+  EXPECT_EQ(particle_wall_pair(ps[0], ws[0], StiffnessRule::kContact, WallFrictionRule::kMinimum).friction, 0.20);
+  // The stepper builds its table with the settings' rule.
+  PhysicsSettings settings;
+  settings.particle_materials = ps;
+  settings.wall_materials = ws;
+  settings.wall_friction = WallFrictionRule::kMinimum;
+  EXPECT_EQ(Stepper(settings).pairs().particle_wall(0, 0).friction, 0.20);
+  settings.wall_friction = WallFrictionRule::kOwn;
+  EXPECT_EQ(Stepper(settings).pairs().particle_wall(0, 0).friction, 0.23);
 }
 
 // ---- critical time step (physics.md section 3, time_step.hpp) ----------------------
