@@ -30,8 +30,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // A scratch name no other process uses: calibrations that share one runs directory
-// (--runs) may compute the same run at the same time; each writes its own scratch file and
-// the last rename wins with identical content (same fingerprint, same bits).
+// (--runs) may compute the same run at the same time; each writes in its own scratch
+// folder and the last rename wins with identical content (same fingerprint, same bits).
 std::string process_unique(const std::string& name) { return name + "." + std::to_string(::getpid()); }
 
 // A scratch folder removed when its scope ends, also when the run in it throws or is
@@ -99,9 +99,7 @@ std::pair<std::string, std::string> DemModel::shared_packing(int replicate) {
       Progress quiet(false);
       const auto t0 = std::chrono::steady_clock::now();
       const OedometerResult r = run_oedometer(c, quiet);
-      const fs::path tmp = dir / process_unique("packing.txt.tmp");
-      write_packing(tmp.string(), r.settled);
-      fs::rename(tmp, file);
+      write_packing_atomically(file.string(), r.settled);
       write_text_atomically(dir / "config.toml", c.resolved_toml);
       if (verbose_)
         std::printf("  shared packing (seed %llu): %zu particles settled at the design centre (%.1f s) -> %s\n",
@@ -151,9 +149,7 @@ std::shared_ptr<const ShearSample> DemModel::shear_sample(const RunConfig& c) {
       fs::create_directories(dir);
       const auto t0 = std::chrono::steady_clock::now();
       const ShearSample s = prepare_shear_sample(c, quiet);
-      const fs::path tmp = dir / process_unique("packing.txt.tmp");
-      write_packing(tmp.string(), s.particles);
-      fs::rename(tmp, file);
+      write_packing_atomically(file.string(), s.particles);
       if (verbose_)
         std::printf("  shear sample: %zu particles settled (%.1f s) -> %s\n", s.particles.size(),
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), file.c_str());
@@ -230,14 +226,18 @@ nlohmann::json DemModel::run_shear_outputs(const RunConfig& c, double& wall, std
 
 Eigen::VectorXd DemModel::targets_from(const nlohmann::json& out, const std::string& id) const {
   const auto& t = spec_.problem.targets;
+  // A compression run that stopped short of the fit range's top (fit_force_max) has no c1
+  // and c2, or those of a shorter curve: c1 and c2 depend on the range they are fitted over.
+  const auto stopped_short = [&](const std::string& what) {
+    return CalibrationError("model.set", "DEM run " + id + " " + what + " (largest force " +
+                                             std::to_string(out.value("max_force", 0.0)) +
+                                             " N): raise oedometer.stop_force / max_piston_travel or lower "
+                                             "oedometer.fit_force_max in [model] set");
+  };
   Eigen::VectorXd y(t.size());
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (!out.contains(t[i].name)) {
-      if (spec_.stage == Stage::kCompression)
-        throw CalibrationError("model.set", "DEM run " + id + " did not reach the fit range (largest force " +
-                                                std::to_string(out.value("max_force", 0.0)) +
-                                                " N): raise oedometer.stop_force / max_piston_travel or lower "
-                                                "oedometer.fit_force_max in [model] set");
+      if (spec_.stage == Stage::kCompression) throw stopped_short("did not reach the fit range");
       throw CalibrationError("model", "DEM run " + id + " has no output " + t[i].name);
     }
     if (!out[t[i].name].is_number())
@@ -245,14 +245,8 @@ Eigen::VectorXd DemModel::targets_from(const nlohmann::json& out, const std::str
                                           out[t[i].name].dump() + "); remove the run's folder to run it again");
     y[i] = out[t[i].name].get<double>();
   }
-  // c1 and c2 depend on the range they are fitted over: a run that stopped below the fit
-  // range's top (fit_force_max) would give coefficients of a shorter curve.
   if (spec_.stage == Stage::kCompression && !out.value("fit_reached_force_max", true))
-    throw CalibrationError("model.set", "DEM run " + id + " stopped below the top of the fit range (largest force " +
-                                            std::to_string(out.value("max_force", 0.0)) +
-                                            " N), so its c1 and c2 would be fitted over a shorter range: raise "
-                                            "oedometer.stop_force / max_piston_travel or lower oedometer.fit_force_max "
-                                            "in [model] set");
+    throw stopped_short("stopped below the top of the fit range, so its c1 and c2 would be fitted over a shorter range");
   return y;
 }
 
@@ -308,10 +302,8 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
     const auto s = read_json_file(summary.string(), advice);
     require_fields(s, summary.string(),
                    {{"fingerprint", JsonField::kString}, {"wall_seconds", JsonField::kNumber},
-                    {"colza_revision", JsonField::kString}},
+                    {"colza_revision", JsonField::kString}, {"outputs", JsonField::kObject}},
                    advice);
-    if (s.contains("outputs") && !s["outputs"].is_object())
-      throw ConfigError(summary.string(), "outputs", "must be an object; colza wrote it, so it was edited: " + advice);
     // A run reuses a finished one unless the spec needs what the older run did not keep
     // (the load curves, for the peak strength): then it runs again in its place.
     if (s.value("fingerprint", "") == fp && (!reads_peaks || has_load_curves(dir))) {

@@ -172,12 +172,11 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   RunConfig c = config;
   Progress progress(!opt.quiet && opt.jobs <= 1);
   ShearSample sample;
-  bool sample_reused = false;
   const fs::path sample_info = dir / "sample.json";
   const bool resumed = !opt.force && fs::exists(sample_info);
-  const nlohmann::json earlier_sample = resumed ? read_json_file(sample_info.string()) : nlohmann::json::object();
   if (resumed) {
-    require_fields(earlier_sample, sample_info.string(),
+    const nlohmann::json earlier = read_json_file(sample_info.string());
+    require_fields(earlier, sample_info.string(),
                    {{"config_fingerprint", JsonField::kString, true},
                     {"particles_generated", JsonField::kNumber},
                     {"git_revision", JsonField::kString}});
@@ -185,25 +184,20 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
       throw ConfigError((dir / "packing.txt").string(), "",
                         "is missing next to sample.json: the finished loads were run on a sample that is gone; pass "
                         "--force to start the series again");
-  }
-  // An unfinished series of another configuration is not silently replaced: its loads
-  // would stay next to the new ones.
-  if (resumed && earlier_sample.value("config_fingerprint", "") != fingerprint)
-    throw ConfigError("--out " + dir.string(), "",
-                      "holds an unfinished series of another configuration (sample.json's config_fingerprint "
-                      "differs); pass --force to replace it, or choose another directory");
-  if (resumed) {
+    // An unfinished series of another configuration is not silently replaced: its loads
+    // would stay next to the new ones.
+    if (earlier["config_fingerprint"] != fingerprint)
+      throw ConfigError("--out " + dir.string(), "",
+                        "holds an unfinished series of another configuration (sample.json's config_fingerprint "
+                        "differs); pass --force to replace it, or choose another directory");
     RunConfig from_file = c;
     from_file.shear_box.packing_file = (dir / "packing.txt").string();
     sample = prepare_shear_sample(from_file, progress);
-    sample.generated = earlier_sample.value("particles_generated", sample.generated);
-    sample_reused = true;
-    warn_if_made_by_another_build(earlier_sample, "the sample (packing.txt)");
+    sample.generated = earlier.value("particles_generated", sample.generated);
+    warn_if_made_by_another_build(earlier, "the sample (packing.txt)");
   } else {
     sample = prepare_shear_sample(c, progress);
-    const std::string packing = out.path("packing.txt");
-    write_packing(packing + ".tmp", sample.particles);
-    move_into_place(packing + ".tmp", packing);
+    write_packing_atomically(out.path("packing.txt"), sample.particles);
     nlohmann::json info = {{"config_fingerprint", fingerprint},
                            {"git_revision", git_revision()},
                            {"particles", sample.particles.size()},
@@ -213,7 +207,7 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
     write_text_atomically(out.path("sample.json"), info.dump(2) + "\n");
   }
   std::printf("shear series: %zu particles (%zu generated)%s, %zu loads, %d job(s)\n", sample.particles.size(),
-              sample.generated, sample_reused ? ", sample reused" : "", c.shear_box.normal_stresses.size(), opt.jobs);
+              sample.generated, resumed ? ", sample reused" : "", c.shear_box.normal_stresses.size(), opt.jobs);
 
   // --- loads ------------------------------------------------------------------------
   const auto& loads = c.shear_box.normal_stresses;
@@ -221,21 +215,22 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   std::vector<nlohmann::json> load_json(loads.size());
   std::vector<std::size_t> todo;
   for (std::size_t k = 0; k < loads.size(); ++k) {
-    const fs::path summary = dir / load_label(loads[k]) / "summary.json";
+    const fs::path summary = dir / load_names[k] / "summary.json";
     if (!opt.force && fs::exists(summary)) {
-      const auto s = read_json_file(summary.string(), "remove the load's folder, or pass --force");
+      const std::string advice = "remove the load's folder, or pass --force";
+      const auto s = read_json_file(summary.string(), advice);
       require_fields(s, summary.string(),
                      {{"config_fingerprint", JsonField::kString}, {"normal_stress", JsonField::kNumber},
                       {"shear_strength", JsonField::kNumber, true}, {"mean_normal_stress", JsonField::kNumber},
                       {"consolidated", JsonField::kBoolean}, {"particles_outside", JsonField::kNumber},
                       {"wall_seconds", JsonField::kNumber}, {"git_revision", JsonField::kString}},
-                     "remove the load's folder, or pass --force");
+                     advice);
       if (s.value("config_fingerprint", "") == fingerprint && s.value("normal_stress", -1.0) == loads[k]) {
         strength[k] = s["shear_strength"].get<double>();
         load_json[k] = s;
         load_json[k]["reused"] = true;
-        std::printf("  sigma %.2f kPa: reusing the finished load in %s\n", loads[k] * 1e-3, load_label(loads[k]).c_str());
-        warn_if_made_by_another_build(s, load_label(loads[k]));
+        std::printf("  sigma %.2f kPa: reusing the finished load in %s\n", loads[k] * 1e-3, load_names[k].c_str());
+        warn_if_made_by_another_build(s, load_names[k]);
         continue;
       }
     }
@@ -244,7 +239,7 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   // Each load's folder, named before the loads run side by side (SeriesOutput::path is not
   // thread-safe: with --force it notes the name for the final move).
   std::vector<std::string> load_dirs(loads.size());
-  for (std::size_t k : todo) load_dirs[k] = out.path(load_label(loads[k]));
+  for (std::size_t k : todo) load_dirs[k] = out.path(load_names[k]);
   std::mutex mutex;  // guards the per-load results and stdout
   run_concurrently(todo.size(), opt.jobs, [&](std::size_t t) {
     const std::size_t k = todo[t];
@@ -276,7 +271,7 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
                           {"particles_outside", load_json[k].value("particles_outside", 0)},
                           {"wall_seconds", load_json[k].value("wall_seconds", 0.0)},
                           {"reused", load_json[k].value("reused", false)},
-                          {"directory", load_label(loads[k])}});
+                          {"directory", load_names[k]}});
   if (loads.size() >= 2) {
     const MohrCoulombFit mc = fit_mohr_coulomb(loads, strength);
     s["cohesion"] = mc.cohesion;

@@ -12,6 +12,11 @@ std::string load_label(double normal_stress) {
   return buf;
 }
 
+bool is_load_label(const std::string& name) {
+  if (name.size() <= 7 || name.rfind("load-", 0) != 0 || name.compare(name.size() - 2, 2, "Pa") != 0) return false;
+  return name.find_first_not_of("0123456789", 5) == name.size() - 2;
+}
+
 std::string loads_sharing_a_label(const std::vector<double>& normal_stresses) {
   for (std::size_t a = 0; a < normal_stresses.size(); ++a)
     for (std::size_t b = a + 1; b < normal_stresses.size(); ++b)

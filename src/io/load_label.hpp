@@ -10,6 +10,8 @@ namespace colza {
 // The name of one load's results, "load-<sigma>Pa" (sigma in Pa, to the nearest pascal):
 // a series' load directory, a calibration run's load curve (+ ".csv").
 std::string load_label(double normal_stress);
+// Whether `name` has that form, load-<digits>Pa (a folder of a series' load, say).
+bool is_load_label(const std::string& name);
 
 // Why a list of loads cannot be run as one series or calibration, or "" when it can: two
 // loads with the same label would write to one directory (or curve file), so every load

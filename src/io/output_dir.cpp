@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "config/config_error.hpp"
+#include "io/load_label.hpp"
 
 namespace colza {
 
@@ -18,7 +19,32 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool is_staging_folder(const fs::path& entry) { return entry.filename().string().rfind(".colza-partial-", 0) == 0; }
+// Staging folders are named .colza-partial-<host>-<pid> (staging_prefix).
+constexpr const char* kStagingPrefix = ".colza-partial-";
+
+bool is_staging_folder(const fs::path& entry) { return entry.filename().string().rfind(kStagingPrefix, 0) == 0; }
+
+// Whether `file` is a JSON object colza wrote with one of `keys` (its own summary.json or
+// sample.json), read without throwing.
+bool written_by_colza(const fs::path& file, std::initializer_list<const char*> keys) {
+  std::ifstream in(file);
+  if (!in) return false;
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object()) return false;
+  for (const char* k : keys)
+    if (j.contains(k)) return true;
+  return false;
+}
+
+// Flushes a file's (or a folder's entries') data to the disk, so that a rename that makes it
+// visible is not followed, after a power cut, by an empty or short file. Best effort: a
+// file system that cannot sync (EINVAL) is not an error.
+void sync_to_disk(const fs::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
 
 }  // namespace
 
@@ -38,28 +64,6 @@ void check_output_dir(const fs::path& dir, bool overwrite, const std::string& un
                             "into it (files of the same name are replaced)");
 }
 
-namespace {
-
-// Whether `file` is a JSON object colza wrote with one of `keys` (its own summary.json or
-// sample.json), read without throwing.
-bool written_by_colza(const fs::path& file, std::initializer_list<const char*> keys) {
-  std::ifstream in(file);
-  if (!in) return false;
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-  if (!j.is_object()) return false;
-  for (const char* k : keys)
-    if (j.contains(k)) return true;
-  return false;
-}
-
-// load-<digits>Pa, the name io/load_label.hpp gives a series' load.
-bool is_load_folder_name(const std::string& f) {
-  if (f.size() <= 7 || f.rfind("load-", 0) != 0 || f.compare(f.size() - 2, 2, "Pa") != 0) return false;
-  return f.find_first_not_of("0123456789", 5) == f.size() - 2;
-}
-
-}  // namespace
-
 std::vector<std::string> earlier_run_outputs(const fs::path& dir) {
   std::error_code ec;
   std::vector<std::string> names;
@@ -72,7 +76,7 @@ std::vector<std::string> earlier_run_outputs(const fs::path& dir) {
     if (fs::exists(dir / f, ec)) names.push_back(f);
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string f = it->path().filename().string();
-    if (is_load_folder_name(f) && fs::is_directory(it->path(), ec) &&
+    if (is_load_label(f) && fs::is_directory(it->path(), ec) &&
         written_by_colza(it->path() / "summary.json", {"colza_version"}))
       names.push_back(f);
   }
@@ -80,33 +84,19 @@ std::vector<std::string> earlier_run_outputs(const fs::path& dir) {
   return names;
 }
 
-namespace {
-
-// Flushes a file's (or a folder's entries') data to the disk, so that a rename that makes it
-// visible is not followed, after a power cut, by an empty or short file. Best effort: a
-// file system that cannot sync (EINVAL) is not an error.
-void sync_to_disk(const fs::path& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return;
-  ::fsync(fd);
-  ::close(fd);
-}
-
-}  // namespace
-
-void move_into_place(const fs::path& tmp, const fs::path& file) {
+void write_atomically(const fs::path& file, const std::function<void(const std::string& tmp)>& write) {
+  const std::string tmp = file.string() + ".tmp." + std::to_string(::getpid());
+  write(tmp);
   sync_to_disk(tmp);
   fs::rename(tmp, file);
 }
 
 void write_text_atomically(const fs::path& file, const std::string& text) {
-  const fs::path tmp = file.string() + ".tmp." + std::to_string(::getpid());  // two writers never share it
-  {
+  write_atomically(file, [&](const std::string& tmp) {
     std::ofstream o(tmp);
     o << text;
-    if (!o) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  move_into_place(tmp, file);
+    if (!o) throw std::runtime_error("cannot write " + tmp);
+  });
 }
 
 namespace {
@@ -116,7 +106,7 @@ namespace {
 std::string staging_prefix() {
   char host[256] = {0};
   if (::gethostname(host, sizeof host - 1) != 0) host[0] = 0;
-  return std::string(".colza-partial-") + host + "-";
+  return std::string(kStagingPrefix) + host + "-";
 }
 
 // Removes the staging folders that processes of this machine left when they were killed

@@ -6,6 +6,7 @@
 // by the next OutputStaging in the same directory.
 #pragma once
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,8 +25,9 @@ class OutputStaging {
   // after commit(), replacing a file or folder of that name.
   std::string path(const std::string& name);
   // Moves everything into place, summary.json last. `stale`: entries of an earlier result
-  // in dir (earlier_run_outputs) removed, after its summary.json and before the moves,
-  // unless the new result writes them.
+  // in dir (earlier_run_outputs), all removed after its summary.json and before the moves.
+  // Checks first that every move can be made (ConfigError, nothing removed); a failure after
+  // the removals began keeps the staging folder and names it.
   void commit(const std::vector<std::string>& stale = {});
   const std::filesystem::path& dir() const { return dir_; }
 
@@ -36,11 +38,12 @@ class OutputStaging {
   bool keep_staging_ = false;  // commit() began removing the earlier result: keep the new one
 };
 
-// Syncs `tmp` to the disk and renames it to `file` (replacing it): a file written under a
-// temporary name appears complete or not at all, even after a power cut.
-void move_into_place(const std::filesystem::path& tmp, const std::filesystem::path& file);
+// Writes `file` by calling write(tmp) with a temporary name of this process next to it
+// (two writers never share one), then syncs it to the disk and renames it into place
+// (replacing `file`): the file appears complete or not at all, even after a power cut.
+void write_atomically(const std::filesystem::path& file, const std::function<void(const std::string& tmp)>& write);
 
-// Writes `text` to `file` under a temporary name, then renames it into place.
+// write_atomically with `text` as the contents.
 void write_text_atomically(const std::filesystem::path& file, const std::string& text);
 
 // Checks the output directory without creating anything (for early validation). Unless
@@ -54,7 +57,6 @@ void check_output_dir(const std::filesystem::path& dir, bool overwrite, const st
 // summary.json, but only if dir's summary.json or sample.json is colza's (it names
 // colza_version or config_fingerprint); none otherwise. For OutputStaging::commit when
 // --force replaces the result.
-
 std::vector<std::string> earlier_run_outputs(const std::filesystem::path& dir);
 
 }  // namespace colza

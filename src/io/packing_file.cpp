@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "config/config_error.hpp"
+#include "io/output_dir.hpp"
 
 namespace colza {
 
@@ -41,6 +42,10 @@ void write_packing(const std::string& file, const ParticleArrays& particles) {
     std::fprintf(f, "%.17g %.17g %.17g %.17g\n", x[0], x[1], x[2], particles.radius[i]);
   }
   if (std::fclose(f) != 0) throw std::runtime_error("cannot write " + file);
+}
+
+void write_packing_atomically(const std::string& file, const ParticleArrays& particles) {
+  write_atomically(file, [&](const std::string& tmp) { write_packing(tmp, particles); });
 }
 
 }  // namespace colza

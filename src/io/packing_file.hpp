@@ -17,5 +17,8 @@ struct PackedSphere {
 // Throws ConfigError naming `file` and `key_for_errors` when missing or malformed.
 std::vector<PackedSphere> read_packing(const std::string& file, const std::string& key_for_errors);
 void write_packing(const std::string& file, const ParticleArrays& particles);
+// write_packing through a temporary name, synced and renamed into place (write_atomically):
+// for a packing others may read or reuse while it is written.
+void write_packing_atomically(const std::string& file, const ParticleArrays& particles);
 
 }  // namespace colza

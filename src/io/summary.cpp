@@ -48,14 +48,15 @@ void require_fields(const nlohmann::json& j, const std::string& file, std::initi
       continue;
     }
     const nlohmann::json& v = j[f.key];
+    static const char* const kKindName[] = {"a number", "a string", "a boolean", "an object"};
     const bool ok = f.kind == JsonField::kNumber   ? v.is_number()
                     : f.kind == JsonField::kString ? v.is_string()
+                    : f.kind == JsonField::kObject ? v.is_object()
                                                    : v.is_boolean();
     if (!ok)
       throw ConfigError(file, f.key,
-                        std::string("must be a ") +
-                            (f.kind == JsonField::kNumber ? "number" : f.kind == JsonField::kString ? "string" : "boolean") +
-                            ", got " + v.dump() + "; colza wrote it, so it was edited: " + what_to_do);
+                        std::string("must be ") + kKindName[f.kind] + ", got " + v.dump() +
+                            "; colza wrote it, so it was edited: " + what_to_do);
   }
 }
 

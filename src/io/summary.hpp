@@ -16,7 +16,7 @@ nlohmann::json read_json_file(const std::string& file, const std::string& what_t
 
 // The type a field of such a file must have (JsonField::kind) and whether it must be there.
 struct JsonField {
-  enum Kind { kNumber, kString, kBoolean };
+  enum Kind { kNumber, kString, kBoolean, kObject };
   const char* key;
   Kind kind;
   bool required = false;
