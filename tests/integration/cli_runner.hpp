@@ -35,15 +35,30 @@ inline std::string read_file(const std::filesystem::path& p) {
 
 inline void write_file(const std::filesystem::path& p, const std::string& text) { std::ofstream(p) << text; }
 
+// Where a run's stderr is captured: a file of this test process in the temp folder.
+inline std::filesystem::path stderr_file() {
+  return std::filesystem::temp_directory_path() / ("colza-stderr-" + std::to_string(::getpid()));
+}
+
+// The shell command that runs `colza <args>` with stdout discarded and stderr into `err`.
+inline std::string colza_command(const std::string& args, const std::filesystem::path& err) {
+  return std::string(COLZA_EXECUTABLE) + " " + args + " > /dev/null 2> " + err.string();
+}
+
+// The captured stderr, and the file removed.
+inline std::string take_stderr(const std::filesystem::path& err) {
+  std::string text = read_file(err);
+  std::filesystem::remove(err);
+  return text;
+}
+
 // Runs `colza <args>` with stdout discarded and stderr captured.
 inline CliResult run_colza(const std::string& args) {
-  const auto err = std::filesystem::temp_directory_path() / ("colza-stderr-" + std::to_string(::getpid()));
-  const std::string cmd = std::string(COLZA_EXECUTABLE) + " " + args + " > /dev/null 2> " + err.string();
-  const int status = std::system(cmd.c_str());
+  const auto err = stderr_file();
+  const int status = std::system(colza_command(args, err).c_str());
   CliResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.stderr_text = read_file(err);
-  std::filesystem::remove(err);
+  r.stderr_text = take_stderr(err);
   return r;
 }
 
@@ -54,8 +69,8 @@ inline CliResult run_colza(const std::string& args) {
 // ends before `ready()`, no signal is sent and its own exit code is returned.
 inline CliResult run_colza_interrupted(const std::string& args, const std::function<bool()>& ready,
                                        std::chrono::seconds timeout = std::chrono::seconds(120)) {
-  const auto err = std::filesystem::temp_directory_path() / ("colza-stderr-" + std::to_string(::getpid()));
-  const std::string cmd = std::string("exec ") + COLZA_EXECUTABLE + " " + args + " > /dev/null 2> " + err.string();
+  const auto err = stderr_file();
+  const std::string cmd = "exec " + colza_command(args, err);
   CliResult r;
   const pid_t child = ::fork();
   if (child < 0) return r;
@@ -88,17 +103,22 @@ inline CliResult run_colza_interrupted(const std::string& args, const std::funct
     }
   }
   if (status >= 0 && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
-  r.stderr_text = read_file(err);
-  std::filesystem::remove(err);
+  r.stderr_text = take_stderr(err);
   return r;
+}
+
+// Whether `dir` has an entry (at any depth) whose path satisfies `matches` (none if dir is
+// missing).
+inline bool has_entry(const std::filesystem::path& dir, const std::function<bool(const std::filesystem::path&)>& matches) {
+  std::error_code ec;
+  for (std::filesystem::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (matches(it->path())) return true;
+  return false;
 }
 
 // Whether `dir` has an entry (at any depth) whose path contains `part`, e.g. a staging folder.
 inline bool has_entry_containing(const std::filesystem::path& dir, const std::string& part) {
-  std::error_code ec;
-  for (std::filesystem::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-    if (it->path().string().find(part) != std::string::npos) return true;
-  return false;
+  return has_entry(dir, [&](const std::filesystem::path& p) { return p.string().find(part) != std::string::npos; });
 }
 
 // Every file under `dir` (relative path -> contents), to compare a result before and after.

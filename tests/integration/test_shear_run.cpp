@@ -120,11 +120,9 @@ TEST_F(SmallShearSeries, ForceReplacesTheEarlierSeriesOnlyOnceTheNewOneIsComplet
   // was, sample included.
   const std::string from_packing = " --set shear_box.packing_file=" + (out_ / "packing.txt").string();
   const auto new_sample_staged = [&] {
-    std::error_code ec;
-    for (fs::recursive_directory_iterator it(earlier, ec), end; !ec && it != end; it.increment(ec))
-      if (it->path().filename() == "sample.json" && it->path().string().find(".colza-partial-") != std::string::npos)
-        return true;
-    return false;
+    return has_entry(earlier, [](const fs::path& p) {
+      return p.filename() == "sample.json" && p.string().find(".colza-partial-") != std::string::npos;
+    });
   };
   CliResult r = run_colza_interrupted("run shear-series --quiet --force --config " + kConfig + from_packing +
                                           " --set shear_box.shear_displacement=0.1 --out " + earlier.string(),

@@ -157,6 +157,29 @@ Problem shear_problem() {
   return p;
 }
 
+// Planes close to what the full-size box gives at the paper's 30 mm protocol (session 6,
+// the five design runs of data/calibration/shear.toml): C = -1600 + 2567 Cn + 80 Cs (Pa),
+// tan(Phi) = 0.45 - 0.027 Cn - 0.005 Cs.
+Eigen::VectorXd full_box_planes(const Eigen::VectorXd& x) {
+  return Eigen::Vector2d(-1600.0 + 2567.0 * x[0] + 80.0 * x[1], 0.45 - 0.027 * x[0] - 0.005 * x[1]);
+}
+
+// The paper's shear design with the planes' values at (Cn, Cs) = (1.8, 3.3) N as targets,
+// uncertainties 550 Pa and 0.016 (the realisation scatter).
+Problem full_box_problem() {
+  Problem p = shear_problem();
+  const Eigen::VectorXd truth = full_box_planes(Eigen::Vector2d(1.8, 3.3));
+  p.targets = {{"cohesion", "Pa", truth[0], 550.0}, {"tan_phi", "-", truth[1], 0.016}};
+  return p;
+}
+
+// The first warning that starts with `prefix`, or "".
+std::string warning_starting_with(const CalibrationResult& r, const std::string& prefix) {
+  for (const auto& w : r.warnings)
+    if (w.rfind(prefix, 0) == 0) return w;
+  return "";
+}
+
 std::string message_of(const std::function<void()>& f) {
   try {
     f();
@@ -254,18 +277,14 @@ TEST(CalibrationIdentity, CorrelatedTargetsOfOneLine) {
   // -0.935505.
   EXPECT_NEAR(line_fit_correlation({25750.0, 78750.0})(0, 1), -0.891852, 1e-6);
   EXPECT_NEAR(line_fit_correlation({25750.0, 43500.0, 61000.0, 78750.0})(1, 0), -0.935505, 1e-6);
-  // The planes of the next test, C = -1600 + 2567 Cn + 80 Cs, tan(Phi) = 0.45 - 0.027 Cn -
-  // 0.005 Cs, uncertainties 550 Pa and 0.016, now with the two-load correlation rho: the
-  // parameter covariance is J^-1 Sigma J^-T (J square), so with det = -10.675
+  // The planes of the next test (full_box_planes), uncertainties 550 Pa and 0.016, now with
+  // the two-load correlation rho: the parameter covariance is J^-1 Sigma J^-T (J square), so
+  // with det = -10.675
   // var(Cn) = (0.005^2 550^2 + 80^2 0.016^2 + 2 (0.005)(80) rho 550 0.016) / det^2 -> 0.160137 N
   // var(Cs) = (0.027^2 550^2 + 2567^2 0.016^2 + 2 (0.027)(2567) rho 550 0.016) / det^2 -> 2.68170 N
   // against 0.284 and 4.09 N if the targets were independent. The solution is the same.
-  const ForwardModel model = [](const Eigen::VectorXd& x) {
-    return Eigen::Vector2d(-1600.0 + 2567.0 * x[0] + 80.0 * x[1], 0.45 - 0.027 * x[0] - 0.005 * x[1]).eval();
-  };
-  Problem p = shear_problem();
-  const Eigen::VectorXd truth = model(Eigen::Vector2d(1.8, 3.3));
-  p.targets = {{"cohesion", "Pa", truth[0], 550.0}, {"tan_phi", "-", truth[1], 0.016}};
+  const ForwardModel model = full_box_planes;
+  Problem p = full_box_problem();
   const CalibrationResult independent = calibrate_paper(p, model, {});
   p.target_correlation = line_fit_correlation({25750.0, 78750.0});
   const CalibrationResult correlated = calibrate_paper(p, model, {});
@@ -279,38 +298,26 @@ TEST(CalibrationIdentity, CorrelatedTargetsOfOneLine) {
 }
 
 TEST(CalibrationIdentity, AParameterTheTargetsHardlyFeelIsReportedAsNotDetermined) {
-  // Planes close to what the full-size box gives at the paper's 30 mm protocol (session 6,
-  // the five design runs of data/calibration/shear.toml): C = -1600 + 2567 Cn + 80 Cs (Pa),
-  // tan(Phi) = 0.45 - 0.027 Cn - 0.005 Cs, with uncertainties 550 Pa and 0.016 (the
+  // The full-size box's planes (full_box_planes) with uncertainties 550 Pa and 0.016 (the
   // realisation scatter). J^-1 = [[-0.005, -80], [0.027, 2567]] / det, det = -10.675, so
   // sigma(Cs) = sqrt((0.027 * 550)^2 + (2567 * 0.016)^2) / 10.675 = 4.09 N (2 sigma far wider
   // than the range 2 .. 4 N) and sigma(Cn) = sqrt((0.005 * 550)^2 + (80 * 0.016)^2) / 10.675
   // = 0.284 N (4 sigma = 1.14 N: narrower than the range 0.5 .. 2.5 N, wider than half of it).
-  const ForwardModel model = [](const Eigen::VectorXd& x) {
-    return Eigen::Vector2d(-1600.0 + 2567.0 * x[0] + 80.0 * x[1], 0.45 - 0.027 * x[0] - 0.005 * x[1]).eval();
-  };
-  Problem p = shear_problem();
-  const Eigen::VectorXd truth = model(Eigen::Vector2d(1.8, 3.3));
-  p.targets = {{"cohesion", "Pa", truth[0], 550.0}, {"tan_phi", "-", truth[1], 0.016}};
+  const ForwardModel model = full_box_planes;
+  Problem p = full_box_problem();
   const CalibrationResult r = calibrate_paper(p, model, {});
   EXPECT_NEAR(r.sigma[1], 4.09, 0.01);
   EXPECT_NEAR(r.sigma[0], 0.284, 0.001);
-  std::string cs, cn;
-  for (const auto& w : r.warnings) {
-    if (w.rfind("Cs is not determined", 0) == 0) cs = w;
-    if (w.rfind("Cn is not determined", 0) == 0) cn = w;
-  }
+  const std::string cs = warning_starting_with(r, "Cs is not determined");
+  const std::string cn = warning_starting_with(r, "Cn is not determined");
   EXPECT_NE(cs.find("its 95 % interval, +/- 2 sigma = +/- 8.1"), std::string::npos) << cs;
   EXPECT_NE(cs.find("design range 2 .. 4 N"), std::string::npos) << cs;
   EXPECT_NE(cs.find("cohesion by 160 Pa (0.290909 uncertainties), tan_phi by 0.01 - (0.625 uncertainties)"),
             std::string::npos) << cs;
   EXPECT_TRUE(cn.empty()) << cn;
-  // A well-determined problem (the linear compression model) says nothing of the kind.
   // sigma(Cn) = 0.284 N: the interval, 4 sigma = 1.14 N wide, is wider than half the range
   // (1 N), not than the range: weakly determined.
-  std::string cn_first;
-  for (const auto& w : r.warnings)
-    if (w.rfind("Cn is only weakly determined", 0) == 0) cn_first = w;
+  const std::string cn_first = warning_starting_with(r, "Cn is only weakly determined");
   EXPECT_NE(cn_first.find("(1.1"), std::string::npos) << cn_first;
   // A cohesion known 1.45x less well: sigma(Cn) = sqrt((0.005 * 800)^2 + (80 * 0.016)^2) /
   // 10.675 = 0.393 N; 4 sigma = 1.57 N lies between half the range and the range 2 N:
@@ -318,9 +325,7 @@ TEST(CalibrationIdentity, AParameterTheTargetsHardlyFeelIsReportedAsNotDetermine
   p.targets[0].uncertainty = 800.0;
   const CalibrationResult weak = calibrate_paper(p, model, {});
   EXPECT_NEAR(weak.sigma[0], 0.393, 0.001);
-  std::string cn_weak;
-  for (const auto& w : weak.warnings)
-    if (w.rfind("Cn is only weakly determined", 0) == 0) cn_weak = w;
+  const std::string cn_weak = warning_starting_with(weak, "Cn is only weakly determined");
   EXPECT_NE(cn_weak.find("+/- 2 sigma = +/- 0.78"), std::string::npos) << cn_weak;
   EXPECT_NE(cn_weak.find("wider than half its design range 0.5 .. 2.5 N"), std::string::npos) << cn_weak;
   EXPECT_NE(cn_weak.find("its value in the solution is rough"), std::string::npos) << cn_weak;
@@ -330,11 +335,10 @@ TEST(CalibrationIdentity, AParameterTheTargetsHardlyFeelIsReportedAsNotDetermine
   p.targets[0].uncertainty = 2000.0;
   const CalibrationResult none = calibrate_paper(p, model, {});
   EXPECT_NEAR(none.sigma[0], 0.944, 0.001);
-  std::string cn_none;
-  for (const auto& w : none.warnings)
-    if (w.rfind("Cn is not determined", 0) == 0) cn_none = w;
+  const std::string cn_none = warning_starting_with(none, "Cn is not determined");
   EXPECT_NE(cn_none.find("+/- 2 sigma = +/- 1.88"), std::string::npos) << cn_none;
   EXPECT_NE(cn_none.find("is wider than its design range 0.5 .. 2.5 N"), std::string::npos) << cn_none;
+  // A well-determined problem (the linear compression model) says nothing of the kind.
   const CalibrationResult ok =
       calibrate_paper(compression_problem(kA * Eigen::Vector2d(437e3, 0.34) + kB, Eigen::Vector2d(1e4, 2e6)), linear_model, {});
   for (const auto& w : ok.warnings) EXPECT_EQ(w.find("is not determined"), std::string::npos) << w;
