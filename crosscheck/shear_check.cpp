@@ -17,31 +17,11 @@
 #include "checks.hpp"
 #include "curve_math.hpp"
 #include "result_files.hpp"
+#include "shear_setting.hpp"
 
 namespace crosscheck {
 
 namespace {
-
-// One size of the check: [shear.<size>] of the tolerance table, the scene it names and the
-// work folder.
-struct ShearSetting {
-  std::string size;   // "small" or "full"
-  std::string base;   // "shear.<size>"
-  std::string label;  // "shear <size>"
-  const toml::table& t;
-  fs::path scene, work;
-};
-
-// `doc` written as `name` into the work folder, for both codes.
-fs::path write_config(const ShearSetting& s, const toml::table& doc, const std::string& name) {
-  const fs::path f = s.work / name;
-  std::ofstream o(f);
-  o << "# written by crosscheck from " << s.scene.string() << "\n" << doc << "\n";
-  return f;
-}
-
-// --normal-stress sigma, at full precision.
-std::vector<std::string> normal_stress_argument(double sigma) { return {"--normal-stress", fmt(sigma, "%.17g")}; }
 
 // The normal stresses (Pa) to run: --loads, or [shear.<size>] loads. Empty (a failed row)
 // if neither gives any.
@@ -125,7 +105,7 @@ void compare_deterministic_start(const CheckContext& ctx, const ShearSetting& s,
 std::optional<std::pair<double, double>> compare_load(const CheckContext& ctx, const ShearSetting& s,
                                                       Report& report, const fs::path& config, double sigma,
                                                       double window_start, double window_end) {
-  const std::string name = "load-" + fmt(sigma, "%.0f") + "Pa";
+  const std::string name = load_run_name(sigma, 0);
   const std::string l = s.label + " " + fmt(1e-3 * sigma, "%.2f") + " kPa";
   const fs::path c_out = s.work / ("colza_" + name), y_out = s.work / ("yade_" + name);
   const std::vector<std::string> arg = normal_stress_argument(sigma);
@@ -224,6 +204,9 @@ void check_shear(const CheckContext& ctx, Report& report, const std::string& siz
     report.check(s.label + " friction angle Phi (deg)", cphi, yphi, std::abs(cphi - yphi),
                  tol_number(*t, "friction_angle_absolute_deg", 5.0), "%.2f");
   }
+
+  // 5. More realisations of every load: means against standard errors.
+  compare_shear_ensemble(ctx, s, report, doc, loads);
 }
 
 }  // namespace crosscheck

@@ -1,0 +1,110 @@
+#include "ensemble_stats.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace crosscheck {
+
+SampleSummary summarise(const std::vector<double>& values) {
+  SampleSummary s;
+  s.n = values.size();
+  if (s.n == 0) return s;
+  double sum = 0.0;
+  for (double v : values) sum += v;
+  s.mean = sum / static_cast<double>(s.n);
+  if (s.n < 2) return s;
+  double squares = 0.0;
+  for (double v : values) squares += (v - s.mean) * (v - s.mean);
+  s.sd = std::sqrt(squares / static_cast<double>(s.n - 1));
+  s.se = s.sd / std::sqrt(static_cast<double>(s.n));
+  return s;
+}
+
+namespace {
+
+MeanDifference difference_with(double difference, double se) {
+  MeanDifference d{difference, se, 0.0};
+  if (se > 0.0) d.t = difference / se;
+  else if (difference != 0.0) d.t = std::numeric_limits<double>::quiet_NaN();
+  return d;
+}
+
+}  // namespace
+
+MeanDifference difference_of_means(const SampleSummary& colza, const SampleSummary& yade) {
+  return difference_with(colza.mean - yade.mean, std::sqrt(colza.se * colza.se + yade.se * yade.se));
+}
+
+LinearComparison compare_linear(const std::vector<double>& weights, const std::vector<SampleSummary>& colza,
+                                const std::vector<SampleSummary>& yade) {
+  LinearComparison c;
+  double var_colza = 0.0, var_yade = 0.0;
+  for (std::size_t k = 0; k < weights.size(); ++k) {
+    c.colza += weights[k] * colza[k].mean;
+    c.yade += weights[k] * yade[k].mean;
+    var_colza += weights[k] * weights[k] * colza[k].se * colza[k].se;
+    var_yade += weights[k] * weights[k] * yade[k].se * yade[k].se;
+  }
+  c.colza_se = std::sqrt(var_colza);
+  c.yade_se = std::sqrt(var_yade);
+  c.difference = difference_with(c.colza - c.yade, std::sqrt(var_colza + var_yade));
+  return c;
+}
+
+LineWeights line_weights(const std::vector<double>& x) {
+  const double n = static_cast<double>(x.size());
+  double mean = 0.0;
+  for (double v : x) mean += v;
+  mean /= n;
+  double sxx = 0.0;
+  for (double v : x) sxx += (v - mean) * (v - mean);
+  LineWeights w;
+  for (double v : x) {
+    w.slope.push_back((v - mean) / sxx);
+    w.intercept.push_back(1.0 / n - mean * w.slope.back());
+  }
+  return w;
+}
+
+namespace {
+
+// splitmix64 (Steele, Lea and Flood 2014): a fixed sequence of 64-bit numbers per seed.
+std::uint64_t next_random(std::uint64_t& state) {
+  std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+// Uniform in [-1, 1): the top 53 bits as a fraction of 2^53, doubled and shifted.
+double symmetric_unit(std::uint64_t& state) { return 2.0 * std::ldexp(static_cast<double>(next_random(state) >> 11), -53) - 1.0; }
+
+}  // namespace
+
+std::string perturbed_packing(const std::string& text, std::uint64_t seed, double amplitude) {
+  std::istringstream in(text);
+  std::string out, line;
+  std::uint64_t state = seed;
+  std::size_t number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (line.empty() || line[0] == '#') {
+      out += line + "\n";
+      continue;
+    }
+    std::istringstream fields(line);
+    double v[4];
+    if (!(fields >> v[0] >> v[1] >> v[2] >> v[3]))
+      throw std::runtime_error("packing line " + std::to_string(number) + " does not hold x y z r");
+    char buffer[128];
+    for (int d = 0; d < 3; ++d) v[d] += amplitude * symmetric_unit(state);
+    std::snprintf(buffer, sizeof buffer, "%.17g %.17g %.17g %.17g\n", v[0], v[1], v[2], v[3]);
+    out += buffer;
+  }
+  return out;
+}
+
+}  // namespace crosscheck

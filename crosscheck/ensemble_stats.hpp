@@ -1,0 +1,55 @@
+// Comparing two codes on a chaotic problem by ensembles: each code runs several independent
+// realisations (the same sample with every coordinate moved by a tiny random amount, so that
+// chaos makes each run another realisation), and the means are compared against their
+// standard errors (crosscheck/README.md, "Ensembles").
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace crosscheck {
+
+// n values: mean, sample standard deviation sd (n - 1 in the denominator; 0 for n < 2) and
+// standard error of the mean se = sd / sqrt(n).
+struct SampleSummary {
+  std::size_t n = 0;
+  double mean = 0.0, sd = 0.0, se = 0.0;
+};
+SampleSummary summarise(const std::vector<double>& values);
+
+// A difference d of two estimates with standard error se (independent errors added in
+// quadrature) and t = d / se (Welch's statistic for two means; NaN when se = 0 and d != 0
+// cannot be judged, 0 when both are 0).
+struct MeanDifference {
+  double difference = 0.0, se = 0.0, t = 0.0;
+};
+MeanDifference difference_of_means(const SampleSummary& colza, const SampleSummary& yade);
+
+// A linear combination sum_k w_k x_k of per-load means, for each code, and their difference:
+// with w the weights of a least-squares line's intercept or slope (line_weights), the
+// Mohr-Coulomb C or tan(Phi) of the mean strengths and its standard error
+// (se^2 = sum_k w_k^2 (se_colza,k^2 + se_yade,k^2)).
+struct LinearComparison {
+  double colza = 0.0, yade = 0.0, colza_se = 0.0, yade_se = 0.0;
+  MeanDifference difference;
+};
+LinearComparison compare_linear(const std::vector<double>& weights, const std::vector<SampleSummary>& colza,
+                                const std::vector<SampleSummary>& yade);
+
+// Weights of the least-squares line y = a + b x through points (x_k, y_k): a = sum_k
+// intercept[k] y_k and b = sum_k slope[k] y_k, with slope[k] = (x_k - mean x) / Sxx and
+// intercept[k] = 1/n - mean x slope[k]. Needs two distinct x.
+struct LineWeights {
+  std::vector<double> intercept, slope;
+};
+LineWeights line_weights(const std::vector<double>& x);
+
+// A packing file's text ("x y z r" per line, '#' comments kept) with every coordinate moved
+// by an independent uniform random amount in [-amplitude, amplitude] (m); radii unchanged,
+// numbers written with 17 significant digits. The same seed gives the same file on every
+// machine (splitmix64, no standard-library distribution). Throws std::runtime_error naming
+// the line if a line does not hold four numbers.
+std::string perturbed_packing(const std::string& text, std::uint64_t seed, double amplitude);
+
+}  // namespace crosscheck

@@ -1,0 +1,113 @@
+// The cross-check's ensemble arithmetic (crosscheck/ensemble_stats.hpp), on cases worked by
+// hand.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "crosscheck/ensemble_stats.hpp"
+
+namespace {
+
+using crosscheck::compare_linear;
+using crosscheck::difference_of_means;
+using crosscheck::line_weights;
+using crosscheck::perturbed_packing;
+using crosscheck::SampleSummary;
+using crosscheck::summarise;
+
+// 2, 4, 4, 4, 5, 5, 7, 9: mean 5, sum of squares about it 32, sd = sqrt(32 / 7),
+// se = sd / sqrt(8) = sqrt(4 / 7).
+TEST(CrosscheckEnsembleStats, SummarisesWithTheSampleStandardDeviation) {
+  const SampleSummary s = summarise({2, 4, 4, 4, 5, 5, 7, 9});
+  EXPECT_EQ(s.n, 8u);
+  EXPECT_DOUBLE_EQ(s.mean, 5.0);
+  EXPECT_DOUBLE_EQ(s.sd, std::sqrt(32.0 / 7.0));
+  EXPECT_DOUBLE_EQ(s.se, std::sqrt(4.0 / 7.0));
+  const SampleSummary one = summarise({3.0});
+  EXPECT_DOUBLE_EQ(one.mean, 3.0);
+  EXPECT_EQ(one.sd, 0.0);
+  EXPECT_EQ(one.se, 0.0);
+}
+
+// Means 10 and 7, standard errors 3 and 4: difference 3, se 5, t 0.6.
+TEST(CrosscheckEnsembleStats, WelchStatisticOfTwoMeans) {
+  const SampleSummary colza{4, 10.0, 6.0, 3.0}, yade{4, 7.0, 8.0, 4.0};
+  const auto d = difference_of_means(colza, yade);
+  EXPECT_DOUBLE_EQ(d.difference, 3.0);
+  EXPECT_DOUBLE_EQ(d.se, 5.0);
+  EXPECT_DOUBLE_EQ(d.t, 0.6);
+  // Without scatter, equal means pass (t = 0) and different ones cannot be judged (NaN).
+  const SampleSummary a{2, 1.0, 0.0, 0.0}, b{2, 2.0, 0.0, 0.0};
+  EXPECT_EQ(difference_of_means(a, a).t, 0.0);
+  EXPECT_TRUE(std::isnan(difference_of_means(a, b).t));
+}
+
+// Loads 1, 2, 3: mean 2, Sxx = 2, slope weights (-1/2, 0, 1/2), intercept weights
+// 1/3 - 2 (-1/2, 0, 1/2) = (4/3, 1/3, -2/3). On tau = 5 + 2 sigma (7, 9, 11) they give the
+// intercept 28/3 + 3 - 22/3 = 5 and the slope 2.
+TEST(CrosscheckEnsembleStats, LeastSquaresLineWeights) {
+  const auto w = line_weights({1.0, 2.0, 3.0});
+  ASSERT_EQ(w.slope.size(), 3u);
+  EXPECT_DOUBLE_EQ(w.slope[0], -0.5);
+  EXPECT_DOUBLE_EQ(w.slope[1], 0.0);
+  EXPECT_DOUBLE_EQ(w.slope[2], 0.5);
+  EXPECT_DOUBLE_EQ(w.intercept[0], 4.0 / 3.0);
+  EXPECT_DOUBLE_EQ(w.intercept[1], 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(w.intercept[2], -2.0 / 3.0);
+  const std::vector<double> tau = {7.0, 9.0, 11.0};
+  double a = 0.0, b = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    a += w.intercept[k] * tau[k];
+    b += w.slope[k] * tau[k];
+  }
+  EXPECT_NEAR(a, 5.0, 1e-14);
+  EXPECT_NEAR(b, 2.0, 1e-14);
+}
+
+// Two loads 1 and 3: slope weights (-1/2, 1/2). colza's means 4 and 8 (se 1 and 2), YADE's 4
+// and 6 (se 2 and 2): slopes 2 and 1, se sqrt(1/4 + 1) and sqrt(1 + 1); the difference 1 has
+// se sqrt(1/4 + 1 + 1 + 1) = sqrt(13) / 2.
+TEST(CrosscheckEnsembleStats, PropagatesStandardErrorsThroughALinearCombination) {
+  const auto w = line_weights({1.0, 3.0});
+  const std::vector<SampleSummary> colza = {{8, 4.0, 0.0, 1.0}, {8, 8.0, 0.0, 2.0}};
+  const std::vector<SampleSummary> yade = {{8, 4.0, 0.0, 2.0}, {8, 6.0, 0.0, 2.0}};
+  const auto c = compare_linear(w.slope, colza, yade);
+  EXPECT_DOUBLE_EQ(c.colza, 2.0);
+  EXPECT_DOUBLE_EQ(c.yade, 1.0);
+  EXPECT_DOUBLE_EQ(c.colza_se, std::sqrt(1.25));
+  EXPECT_DOUBLE_EQ(c.yade_se, std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(c.difference.difference, 1.0);
+  EXPECT_DOUBLE_EQ(c.difference.se, std::sqrt(13.0) / 2.0);
+}
+
+// Comments kept, radii unchanged, every coordinate within the amplitude and most of them moved;
+// the same seed gives the same text, another seed another.
+TEST(CrosscheckEnsembleStats, PerturbsCoordinatesOnlyAndRepeatably) {
+  const std::string packing = "# colza packing: x y z r (m), 2 spheres\n0.01 0.02 0.03 0.003\n0.04 0.05 0.06 0.0035\n";
+  const double a = 1e-6;
+  const std::string p = perturbed_packing(packing, 7, a);
+  EXPECT_EQ(p, perturbed_packing(packing, 7, a));
+  EXPECT_NE(p, perturbed_packing(packing, 8, a));
+  std::istringstream in(p);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "# colza packing: x y z r (m), 2 spheres");
+  const double original[2][4] = {{0.01, 0.02, 0.03, 0.003}, {0.04, 0.05, 0.06, 0.0035}};
+  int moved = 0;
+  for (int k = 0; k < 2; ++k) {
+    double v[4];
+    in >> v[0] >> v[1] >> v[2] >> v[3];
+    for (int d = 0; d < 3; ++d) {
+      EXPECT_LE(std::abs(v[d] - original[k][d]), a * (1 + 1e-9));
+      moved += v[d] != original[k][d];
+    }
+    EXPECT_EQ(v[3], original[k][3]);
+  }
+  EXPECT_EQ(moved, 6);
+  EXPECT_THROW(perturbed_packing("0.1 0.2 x\n", 1, a), std::runtime_error);
+}
+
+}  // namespace
