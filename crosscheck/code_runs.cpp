@@ -1,9 +1,12 @@
 #include "code_runs.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sys/wait.h>
+#include <thread>
 
 namespace crosscheck {
 
@@ -77,6 +80,20 @@ bool CodeRuns::run_yade(const std::string& script, const fs::path& config, const
                     quote(out.string());
   for (const auto& e : extra) cmd += " " + quote(e);
   return run("yade", cmd, out);
+}
+
+std::vector<bool> run_in_parallel(const std::vector<std::function<bool()>>& jobs) {
+  std::vector<char> ok(jobs.size(), 0);
+  std::atomic<std::size_t> next{0};
+  const unsigned workers =
+      std::max(1u, std::min(std::thread::hardware_concurrency(), static_cast<unsigned>(jobs.size())));
+  std::vector<std::thread> pool;
+  for (unsigned w = 0; w < workers; ++w)
+    pool.emplace_back([&] {
+      for (std::size_t j = next++; j < jobs.size(); j = next++) ok[j] = jobs[j]() ? 1 : 0;
+    });
+  for (auto& t : pool) t.join();
+  return {ok.begin(), ok.end()};
 }
 
 }  // namespace crosscheck

@@ -2,6 +2,7 @@
 // on one thread (colza --threads 1, yade -j 1), output to a run folder and a log beside it.
 #pragma once
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 #include "options.hpp"
@@ -36,5 +37,9 @@ class CodeRuns {
 
   const Options& opt_;
 };
+
+// Runs the jobs (each typically one run of a code on one thread) on as many workers as the
+// machine has cores; returns each job's success.
+std::vector<bool> run_in_parallel(const std::vector<std::function<bool()>>& jobs);
 
 }  // namespace crosscheck

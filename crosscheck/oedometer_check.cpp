@@ -1,15 +1,21 @@
 // crosscheck oedometer: both codes load the same settled packing (small: the committed
 // 208-sphere packing; full: the paper's packing, made first by `colza run oedometer`) and
-// their force-displacement curves (curve.csv) are compared.
+// their force-displacement curves (curve.csv) are compared; for the small packing also an
+// ensemble of realisations (crosscheck/README.md, "Ensembles"): the mean forces at the
+// travels against their standard errors.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <vector>
 #include "checks.hpp"
 #include "curve_math.hpp"
+#include "ensemble_rows.hpp"
+#include "ensemble_stats.hpp"
 #include "result_files.hpp"
 
 namespace crosscheck {
@@ -25,6 +31,14 @@ double fit_force_min(const fs::path& config) {
   } catch (...) {
     return 150.0;
   }
+}
+
+// The travels (m) of the tolerance table's `travels`.
+std::vector<double> travels_of(const toml::table& t) {
+  std::vector<double> travels;
+  if (const auto* a = t.at_path("travels").as_array())
+    for (const auto& node : *a) travels.push_back(node.value<double>().value_or(0.0));
+  return travels;
 }
 
 // Adds the rows of one oedometer comparison: the same start (particles, contacts), the first
@@ -59,18 +73,81 @@ void compare_curves(Report& report, const std::string& label, const Csv& c, cons
   report.check(label + " force rms difference / rms force (" + std::to_string(d.n) + " rows, travel " +
                    fmt(1e3 * s_lo, "%.2f") + "-" + fmt(1e3 * s_hi, "%.2f") + " mm)",
                d.rms_colza, d.rms_yade, d.relative, tol_number(t, "rms_relative", 0.05));
-  if (const auto* travels = t.at_path("travels").as_array()) {
-    for (const auto& node : *travels) {
-      const double s = node.value<double>().value_or(0.0);
-      const double fc = interpolate(cs_, cf, s), fy = interpolate(ysd, yf, s);
-      report.check(label + " force at " + fmt(1e3 * s, "%.1f") + " mm travel (N)", fc, fy,
-                   std::abs(fc - fy) / std::abs(fc), tol_number(t, "force_at_relative", 0.1), "%.1f");
-    }
+  for (const double s : travels_of(t)) {
+    const double fc = interpolate(cs_, cf, s), fy = interpolate(ysd, yf, s);
+    report.check(label + " force at " + fmt(1e3 * s, "%.1f") + " mm travel (N)", fc, fy,
+                 std::abs(fc - fy) / std::abs(fc), tol_number(t, "force_at_relative", 0.1), "%.1f");
   }
   report.info(label + " travel at stop (mm)", fmt(1e3 * cs_.back(), "%.3f"), fmt(1e3 * ysd.back(), "%.3f"),
               cs.value("stop_reason", std::string("?")) + " / " + ys.value("stop_reason", std::string("?")));
   if (ys.value("foreign_patch_contacts", 0) != 0)
     report.fail(label + " YADE cylinder patches", "a patch touched a sphere other than its own");
+}
+
+// Realisations 1..N-1 of the loading (N = ensemble_realisations; realisation 0 is the run of
+// check_oedometer in c_out0, y_out0) from copies of the config's packing with every coordinate
+// moved by U(-a, a), a = ensemble_perturbation, seed k; then the mean force of each code at
+// every travel against the standard errors (Welch's t <= ensemble_t_max). Nothing when the
+// table asks for fewer than two realisations.
+void compare_ensemble(const CheckContext& ctx, Report& report, const std::string& label, const toml::table& t,
+                      const fs::path& config, const fs::path& work, const fs::path& c_out0, const fs::path& y_out0) {
+  const std::size_t realisations = static_cast<std::size_t>(tol_number(t, "ensemble_realisations", 1.0));
+  if (realisations < 2) return;
+  const double amplitude = tol_number(t, "ensemble_perturbation", 1e-12);
+  const double t_max = tol_number(t, "ensemble_t_max", 3.0);
+  const std::string what = label + " ensemble (" + std::to_string(realisations) + " realisations)";
+  std::vector<fs::path> c_out{c_out0}, y_out{y_out0};
+  std::vector<std::function<bool()>> jobs;
+  try {
+    toml::table doc = toml::parse_file(config.string());
+    fs::path packing = doc.at_path("oedometer.packing_file").value_or(std::string());
+    if (packing.is_relative()) packing = config.parent_path() / packing;  // as colza reads it
+    const std::string text = read_text(packing);
+    for (std::size_t k = 1; k < realisations; ++k) {
+      const std::string r = "-r" + std::to_string(k);
+      const fs::path packing_k = work / ("packing" + r + ".txt");
+      std::ofstream(packing_k) << perturbed_packing(text, k, amplitude);
+      doc["oedometer"].as_table()->insert_or_assign("packing_file", fs::absolute(packing_k).string());
+      const fs::path config_k = work / (config.stem().string() + r + ".toml");
+      std::ofstream(config_k) << "# written by crosscheck from " << config.string() << "\n" << doc << "\n";
+      c_out.push_back(work / ("colza" + r));
+      y_out.push_back(work / ("yade" + r));
+      jobs.push_back([&ctx, config_k, out = c_out.back()] { return ctx.runs.run_colza("oedometer", config_k, out); });
+      jobs.push_back([&ctx, config_k, out = y_out.back()] { return ctx.runs.run_yade("run_oedometer.py", config_k, out); });
+    }
+  } catch (const std::exception& e) {
+    report.fail(what, e.what());
+    return;
+  }
+  std::printf("crosscheck: %s: %zu more runs of each code (packings moved by up to %g m)...\n", what.c_str(),
+              jobs.size() / 2, amplitude);
+  std::fflush(stdout);
+  run_in_parallel(jobs);
+
+  const std::vector<double> travels = travels_of(t);
+  std::vector<std::vector<double>> c_force(travels.size()), y_force(travels.size());
+  for (std::size_t k = 0; k < realisations; ++k) {
+    try {
+      const Csv c = read_csv(c_out[k] / "curve.csv"), y = read_csv(y_out[k] / "curve.csv");
+      if (read_json(y_out[k] / "summary.json").value("foreign_patch_contacts", 0) != 0)
+        throw std::runtime_error("a YADE cylinder patch touched a sphere other than its own");
+      for (std::size_t j = 0; j < travels.size(); ++j) {
+        c_force[j].push_back(interpolate(c.at("piston_displacement"), c.at("piston_force"), travels[j]));
+        y_force[j].push_back(interpolate(y.at("piston_displacement"), y.at("piston_force"), travels[j]));
+      }
+    } catch (const std::exception& e) {
+      report.fail(what + " realisation " + std::to_string(k), e.what());
+      return;
+    }
+  }
+  for (std::size_t j = 0; j < travels.size(); ++j) {
+    const SampleSummary c = summarise(c_force[j]), y = summarise(y_force[j]);
+    const MeanDifference d = difference_of_means(c, y);
+    const std::string at = what + " force at " + fmt(1e3 * travels[j], "%.1f") + " mm travel";
+    check_t(report, at + " (N, mean +- s.e.)", mean_and_error(c.mean, c.se, "%.1f"), mean_and_error(y.mean, y.se, "%.1f"),
+            d, ", " + fmt(100.0 * d.difference / y.mean, "%+.1f") + " %", t_max);
+    report.info(at + ": scatter of one realisation (sd, N)", fmt(c.sd, "%.1f"), fmt(y.sd, "%.1f"), "chaos, not compared");
+  }
 }
 
 }  // namespace
@@ -95,10 +172,13 @@ void check_oedometer(const CheckContext& ctx, Report& report, const std::string&
         return;
       }
     }
-    std::ifstream in(config);
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string s = text.str();
+    std::string s;
+    try {
+      s = read_text(config);
+    } catch (const std::exception& e) {
+      report.fail("oedometer full", e.what());
+      return;
+    }
     const std::string marker = "@PACKING@";
     const auto at = s.find(marker);
     if (at == std::string::npos) {
@@ -123,6 +203,7 @@ void check_oedometer(const CheckContext& ctx, Report& report, const std::string&
   } catch (const std::exception& e) {
     report.fail("oedometer " + size, e.what());
   }
+  compare_ensemble(ctx, report, "oed " + size, *t, config, work, c_out, y_out);
 }
 
 }  // namespace crosscheck

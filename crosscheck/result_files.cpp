@@ -42,6 +42,14 @@ Csv read_csv(const fs::path& file) {
   return csv;
 }
 
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 nlohmann::json read_json(const fs::path& file) {
   std::ifstream in(file);
   if (!in) return nlohmann::json::object();

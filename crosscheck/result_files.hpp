@@ -23,6 +23,9 @@ struct Csv {
 // Throws std::runtime_error if the file cannot be read, is empty or has a short row.
 Csv read_csv(const fs::path& file);
 
+// The whole file as text; throws std::runtime_error naming it if it cannot be read.
+std::string read_text(const fs::path& file);
+
 // An empty object if the file is missing or not JSON (a run that did not finish).
 nlohmann::json read_json(const fs::path& file);
 

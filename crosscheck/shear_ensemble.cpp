@@ -11,59 +11,19 @@
 // descends at its clamped speed until the stress is nearly reached, and eight such runs ended
 // within 1 um of plate height of each other.)
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <functional>
 #include <numbers>
-#include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
+#include "ensemble_rows.hpp"
 #include "ensemble_stats.hpp"
 #include "result_files.hpp"
 #include "shear_setting.hpp"
 
 namespace crosscheck {
-
-namespace {
-
-// Runs the jobs on as many workers as the machine has cores (each run is one thread: colza
-// --threads 1, yade -j 1); returns each job's success.
-std::vector<bool> run_in_parallel(const std::vector<std::function<bool()>>& jobs) {
-  std::vector<char> ok(jobs.size(), 0);
-  std::atomic<std::size_t> next{0};
-  const unsigned workers = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), jobs.size()));
-  std::vector<std::thread> pool;
-  for (unsigned w = 0; w < workers; ++w)
-    pool.emplace_back([&] {
-      for (std::size_t j = next++; j < jobs.size(); j = next++) ok[j] = jobs[j]() ? 1 : 0;
-    });
-  for (auto& t : pool) t.join();
-  return {ok.begin(), ok.end()};
-}
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// "21.91 +- 0.78"
-std::string mean_and_error(double mean, double se, const char* f = "%.3f") {
-  return fmt(mean, f) + " +- " + fmt(se, f);
-}
-
-// A row that passes when |t| <= t_max.
-void check_t(Report& report, const std::string& metric, const std::string& colza, const std::string& yade,
-             const MeanDifference& d, const std::string& relative, double t_max) {
-  const bool pass = std::isfinite(d.t) && std::abs(d.t) <= t_max;
-  report.add(Row{metric, colza, yade, "t = " + fmt(d.t, "%.2f") + relative, "|t| <= " + fmt(t_max, "%g"), pass, false});
-}
-
-}  // namespace
 
 void compare_shear_ensemble(const CheckContext& ctx, const ShearSetting& s, Report& report, const toml::table& doc,
                             const std::vector<double>& loads) {
@@ -73,7 +33,13 @@ void compare_shear_ensemble(const CheckContext& ctx, const ShearSetting& s, Repo
   const double t_max = tol_number(s.t, "ensemble_t_max", 3.0);
   const std::string what = s.label + " ensemble (" + std::to_string(realisations) + " realisations)";
   const fs::path sample = doc.at_path("shear_box.packing_file").value_or(std::string());
-  const std::string packing = read_text(sample);
+  std::string packing;
+  try {
+    packing = read_text(sample);
+  } catch (const std::exception& e) {
+    report.fail(what, e.what());
+    return;
+  }
 
   // Realisation k >= 1: its packing and config, then both codes at every load.
   std::vector<std::function<bool()>> jobs;
