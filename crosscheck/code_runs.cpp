@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <stdexcept>
 #include <sys/wait.h>
 #include <thread>
 
@@ -13,10 +15,14 @@ namespace crosscheck {
 namespace {
 
 // Runs a shell command with its output to `log`; returns its exit status (-1 if it did not
-// exit normally).
+// exit normally). std::system ignores SIGINT in this process while the command runs, so a
+// command stopped by Ctrl-C (killed by SIGINT, or the shell's 128 + SIGINT) raises SIGINT
+// here afterwards: crosscheck stops instead of starting its next run.
 int run_logged(const std::string& command, const fs::path& log) {
   const std::string full = command + " > " + quote(log.string()) + " 2>&1 < /dev/null";
   const int raw = std::system(full.c_str());
+  if (raw != -1 && ((WIFSIGNALED(raw) && WTERMSIG(raw) == SIGINT) || (WIFEXITED(raw) && WEXITSTATUS(raw) == 128 + SIGINT)))
+    std::raise(SIGINT);
   return (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
 }
 
@@ -53,6 +59,10 @@ bool CodeRuns::reused(const fs::path& out) const {
 bool CodeRuns::run(const std::string& code, const std::string& command, const fs::path& out) const {
   fs::create_directories(out.parent_path());
   const fs::path log = out.string() + ".log";
+  // An earlier run's results must not pass for this run's if it fails (YADE's scripts write
+  // their results only at the end, colza replaces them only when it succeeds).
+  fs::remove_all(out);
+  fs::remove(log);
   const int status = run_logged(command, log);
   if (status != 0) {
     std::fprintf(stderr, "crosscheck: %s failed (exit %d): %s\n%s", code.c_str(), status, command.c_str(),
@@ -85,15 +95,27 @@ bool CodeRuns::run_yade(const std::string& script, const fs::path& config, const
 std::vector<bool> run_in_parallel(const std::vector<std::function<bool()>>& jobs) {
   std::vector<char> ok(jobs.size(), 0);
   std::atomic<std::size_t> next{0};
-  const unsigned workers =
-      std::max(1u, std::min(std::thread::hardware_concurrency(), static_cast<unsigned>(jobs.size())));
+  const unsigned workers = static_cast<unsigned>(std::min<std::size_t>(kParallelRuns, jobs.size()));
   std::vector<std::thread> pool;
   for (unsigned w = 0; w < workers; ++w)
     pool.emplace_back([&] {
-      for (std::size_t j = next++; j < jobs.size(); j = next++) ok[j] = jobs[j]() ? 1 : 0;
+      for (std::size_t j = next++; j < jobs.size(); j = next++) {
+        try {
+          ok[j] = jobs[j]() ? 1 : 0;
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "crosscheck: a run failed: %s\n", e.what());
+        }
+      }
     });
   for (auto& t : pool) t.join();
   return {ok.begin(), ok.end()};
+}
+
+fs::path write_run_config(const fs::path& file, const toml::table& doc, const fs::path& source) {
+  std::ofstream o(file);
+  o << "# written by crosscheck from " << source.string() << "\n" << doc << "\n";
+  if (!o) throw std::runtime_error("cannot write " + file.string());
+  return file;
 }
 
 }  // namespace crosscheck

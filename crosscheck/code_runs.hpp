@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <toml++/toml.h>
 #include <vector>
 #include "options.hpp"
 
@@ -38,8 +39,16 @@ class CodeRuns {
   const Options& opt_;
 };
 
-// Runs the jobs (each typically one run of a code on one thread) on as many workers as the
-// machine has cores; returns each job's success.
+// How many runs run_in_parallel keeps going at once: the 2 cores of the CI machine (each run
+// is one thread: colza --threads 1, yade -j 1); more would oversubscribe a ctest -j run.
+inline constexpr std::size_t kParallelRuns = 2;
+
+// Runs the jobs (each one run of a code), kParallelRuns at a time; returns each job's success
+// (false for a job that threw).
 std::vector<bool> run_in_parallel(const std::vector<std::function<bool()>>& jobs);
+
+// `doc` written to `file` with a first comment line naming `source`, for both codes; returns
+// `file`. Throws std::runtime_error if it cannot be written.
+fs::path write_run_config(const fs::path& file, const toml::table& doc, const fs::path& source);
 
 }  // namespace crosscheck

@@ -1,5 +1,6 @@
 #include "ensemble_stats.hpp"
 
+#include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -25,33 +26,70 @@ SampleSummary summarise(const std::vector<double>& values) {
 
 namespace {
 
-MeanDifference difference_with(double difference, double se) {
-  MeanDifference d{difference, se, 0.0};
-  if (se > 0.0) d.t = difference / se;
-  else if (difference != 0.0) d.t = std::numeric_limits<double>::quiet_NaN();
+// One variance term of a Welch-Satterthwaite sum: w^2 se^2 of a mean of n runs.
+struct VarianceTerm {
+  double variance;  // w^2 se^2
+  std::size_t n;
+};
+
+// d with the variance terms of its independent parts: se, df = (sum v)^2 / sum v^2 / (n - 1)
+// (Welch 1947, Satterthwaite 1946), t and the two-sided p-value.
+MeanDifference difference_with(double difference, const std::vector<VarianceTerm>& terms) {
+  double variance = 0.0, df_denominator = 0.0;
+  for (const VarianceTerm& v : terms) {
+    variance += v.variance;
+    if (v.n > 1) df_denominator += v.variance * v.variance / static_cast<double>(v.n - 1);
+  }
+  MeanDifference d;
+  d.difference = difference;
+  d.se = std::sqrt(variance);
+  if (d.se == 0.0) {
+    d.t = difference == 0.0 ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+    d.p = difference == 0.0 ? 1.0 : 0.0;
+    return d;
+  }
+  d.df = df_denominator > 0.0 ? variance * variance / df_denominator : 0.0;
+  d.t = difference / d.se;
+  if (!(d.df > 0.0) || !std::isfinite(d.t)) {
+    d.p = std::numeric_limits<double>::quiet_NaN();
+    return d;
+  }
+  const boost::math::students_t student(d.df);
+  d.p = 2.0 * boost::math::cdf(boost::math::complement(student, std::abs(d.t)));
   return d;
 }
 
 }  // namespace
 
 MeanDifference difference_of_means(const SampleSummary& colza, const SampleSummary& yade) {
-  return difference_with(colza.mean - yade.mean, std::sqrt(colza.se * colza.se + yade.se * yade.se));
+  return difference_with(colza.mean - yade.mean,
+                         {{colza.se * colza.se, colza.n}, {yade.se * yade.se, yade.n}});
 }
 
 LinearComparison compare_linear(const std::vector<double>& weights, const std::vector<SampleSummary>& colza,
                                 const std::vector<SampleSummary>& yade) {
   LinearComparison c;
   double var_colza = 0.0, var_yade = 0.0;
+  std::vector<VarianceTerm> terms;
   for (std::size_t k = 0; k < weights.size(); ++k) {
+    const double w2 = weights[k] * weights[k];
     c.colza += weights[k] * colza[k].mean;
     c.yade += weights[k] * yade[k].mean;
-    var_colza += weights[k] * weights[k] * colza[k].se * colza[k].se;
-    var_yade += weights[k] * weights[k] * yade[k].se * yade[k].se;
+    var_colza += w2 * colza[k].se * colza[k].se;
+    var_yade += w2 * yade[k].se * yade[k].se;
+    terms.push_back({w2 * colza[k].se * colza[k].se, colza[k].n});
+    terms.push_back({w2 * yade[k].se * yade[k].se, yade[k].n});
   }
   c.colza_se = std::sqrt(var_colza);
   c.yade_se = std::sqrt(var_yade);
-  c.difference = difference_with(c.colza - c.yade, std::sqrt(var_colza + var_yade));
+  c.difference = difference_with(c.colza - c.yade, terms);
   return c;
+}
+
+LinearComparison compare_mean_relative(const std::vector<SampleSummary>& colza, const std::vector<SampleSummary>& yade) {
+  std::vector<double> weights;
+  for (const SampleSummary& y : yade) weights.push_back(1.0 / (static_cast<double>(yade.size()) * y.mean));
+  return compare_linear(weights, colza, yade);
 }
 
 LineWeights line_weights(const std::vector<double>& x) {
@@ -91,14 +129,16 @@ std::string perturbed_packing(const std::string& text, std::uint64_t seed, doubl
   std::size_t number = 0;
   while (std::getline(in, line)) {
     ++number;
-    if (line.empty() || line[0] == '#') {
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') {
       out += line + "\n";
       continue;
     }
     std::istringstream fields(line);
     double v[4];
-    if (!(fields >> v[0] >> v[1] >> v[2] >> v[3]))
-      throw std::runtime_error("packing line " + std::to_string(number) + " does not hold x y z r");
+    std::string rest;
+    if (!(fields >> v[0] >> v[1] >> v[2] >> v[3]) || (fields >> rest))
+      throw std::runtime_error("packing line " + std::to_string(number) + " does not hold exactly x y z r");
     char buffer[128];
     for (int d = 0; d < 3; ++d) v[d] += amplitude * symmetric_unit(state);
     std::snprintf(buffer, sizeof buffer, "%.17g %.17g %.17g %.17g\n", v[0], v[1], v[2], v[3]);

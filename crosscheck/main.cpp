@@ -10,17 +10,22 @@
 //   oedometer  both codes load the same settled packing (--size small: the committed
 //              208-sphere packing; --size full: the paper's packing, generated first by
 //              `colza run oedometer` with data/oedometer.toml); compares the force-displacement
-//              curves;
+//              curves, and for the small packing the mean forces of an ensemble of realisations
+//              (crosscheck/README.md, "Ensembles");
 //   shear      both codes run the direct shear box from the same packing (made once by
 //              `colza run shear`; --size small: crosscheck/scenes/shear_small.toml, --size
 //              full: scenes/shear_full.toml, data/shear.toml's geometry); a short
 //              deterministic start must coincide, then per load the shear strength, mean
 //              normal stress and shear-stress curve, and C and Phi of the loads, are compared;
+//              --size small then runs an ensemble of realisations of every load in both codes
+//              and compares the mean strengths, C and Phi by Welch's t test;
 //   all        micro, the small oedometer and shear (and the full ones with --size full).
 //
 // --reuse: a run whose output directory in --workdir already holds summary.json (both codes
 // write it last) is not run again, so an interrupted full-size cross-check (hours of YADE)
-// continues where it stopped. Only for a workdir made from the same sources and configs.
+// continues where it stopped. Only for a workdir made from the same sources, configs and
+// tolerance table (an ensemble's perturbed packings are rewritten on every run, but a reused
+// realisation is not checked against them).
 // --loads: the shear box runs these normal stresses (Pa) instead of [shear.<size>] loads, e.g.
 // two of the four full-size loads when the others are not finished (C and Phi are then those
 // of the line through the given loads; the table says so).

@@ -7,15 +7,14 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <functional>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 #include "checks.hpp"
 #include "curve_math.hpp"
-#include "ensemble_rows.hpp"
-#include "ensemble_stats.hpp"
+#include "ensemble_runs.hpp"
 #include "result_files.hpp"
 
 namespace crosscheck {
@@ -84,70 +83,73 @@ void compare_curves(Report& report, const std::string& label, const Csv& c, cons
     report.fail(label + " YADE cylinder patches", "a patch touched a sphere other than its own");
 }
 
-// Realisations 1..N-1 of the loading (N = ensemble_realisations; realisation 0 is the run of
-// check_oedometer in c_out0, y_out0) from copies of the config's packing with every coordinate
-// moved by U(-a, a), a = ensemble_perturbation, seed k; then the mean force of each code at
-// every travel against the standard errors (Welch's t <= ensemble_t_max). Nothing when the
-// table asks for fewer than two realisations.
+// Realisations 1..N-1 of the loading (realisation 0 is the run of check_oedometer in c_out0,
+// y_out0) from copies of the config's packing with every coordinate moved by U(-a, a), seed k;
+// then the mean force of each code at every travel, judged by Welch's t test at alpha / the
+// number of travels (crosscheck/README.md, "Ensembles"). Nothing when the table asks for
+// fewer than two realisations.
 void compare_ensemble(const CheckContext& ctx, Report& report, const std::string& label, const toml::table& t,
                       const fs::path& config, const fs::path& work, const fs::path& c_out0, const fs::path& y_out0) {
-  const std::size_t realisations = static_cast<std::size_t>(tol_number(t, "ensemble_realisations", 1.0));
-  if (realisations < 2) return;
-  const double amplitude = tol_number(t, "ensemble_perturbation", 1e-12);
-  const double t_max = tol_number(t, "ensemble_t_max", 3.0);
-  const std::string what = label + " ensemble (" + std::to_string(realisations) + " realisations)";
+  const EnsembleSpec e = read_ensemble(t);
+  if (e.realisations < 2) return;
+  const std::string what = label + " ensemble (" + std::to_string(e.realisations) + " realisations)";
   std::vector<fs::path> c_out{c_out0}, y_out{y_out0};
-  std::vector<std::function<bool()>> jobs;
+  std::vector<RealisationRun> runs;
   try {
     toml::table doc = toml::parse_file(config.string());
-    fs::path packing = doc.at_path("oedometer.packing_file").value_or(std::string());
+    toml::table* oedometer = doc["oedometer"].as_table();
+    const std::string packing_file = doc.at_path("oedometer.packing_file").value_or(std::string());
+    if (!oedometer || packing_file.empty()) throw std::runtime_error(config.string() + " names no oedometer.packing_file");
+    fs::path packing = packing_file;
     if (packing.is_relative()) packing = config.parent_path() / packing;  // as colza reads it
     const std::string text = read_text(packing);
-    for (std::size_t k = 1; k < realisations; ++k) {
+    for (std::size_t k = 1; k < e.realisations; ++k) {
       const std::string r = "-r" + std::to_string(k);
       const fs::path packing_k = work / ("packing" + r + ".txt");
-      std::ofstream(packing_k) << perturbed_packing(text, k, amplitude);
-      doc["oedometer"].as_table()->insert_or_assign("packing_file", fs::absolute(packing_k).string());
-      const fs::path config_k = work / (config.stem().string() + r + ".toml");
-      std::ofstream(config_k) << "# written by crosscheck from " << config.string() << "\n" << doc << "\n";
+      write_perturbed_packing(text, packing_k, k, e.amplitude);
+      oedometer->insert_or_assign("packing_file", fs::absolute(packing_k).string());
+      const fs::path config_k = write_run_config(work / (config.stem().string() + r + ".toml"), doc, config);
       c_out.push_back(work / ("colza" + r));
       y_out.push_back(work / ("yade" + r));
-      jobs.push_back([&ctx, config_k, out = c_out.back()] { return ctx.runs.run_colza("oedometer", config_k, out); });
-      jobs.push_back([&ctx, config_k, out = y_out.back()] { return ctx.runs.run_yade("run_oedometer.py", config_k, out); });
+      runs.push_back({c_out.back(), [&ctx, config_k, out = c_out.back()] { return ctx.runs.run_colza("oedometer", config_k, out); }});
+      runs.push_back({y_out.back(), [&ctx, config_k, out = y_out.back()] {
+                        return ctx.runs.run_yade("run_oedometer.py", config_k, out);
+                      }});
     }
-  } catch (const std::exception& e) {
-    report.fail(what, e.what());
+  } catch (const std::exception& ex) {
+    report.fail(what, ex.what());
     return;
   }
   std::printf("crosscheck: %s: %zu more runs of each code (packings moved by up to %g m)...\n", what.c_str(),
-              jobs.size() / 2, amplitude);
+              runs.size() / 2, e.amplitude);
   std::fflush(stdout);
-  run_in_parallel(jobs);
+  if (!run_realisations(runs, report, what)) return;
 
   const std::vector<double> travels = travels_of(t);
   std::vector<std::vector<double>> c_force(travels.size()), y_force(travels.size());
-  for (std::size_t k = 0; k < realisations; ++k) {
+  for (std::size_t k = 0; k < e.realisations; ++k) {
+    const std::string realisation = what + " realisation " + std::to_string(k);
     try {
       const Csv c = read_csv(c_out[k] / "curve.csv"), y = read_csv(y_out[k] / "curve.csv");
-      if (read_json(y_out[k] / "summary.json").value("foreign_patch_contacts", 0) != 0)
-        throw std::runtime_error("a YADE cylinder patch touched a sphere other than its own");
+      if (read_json(y_out[k] / "summary.json").value("foreign_patch_contacts", -1) != 0)
+        throw std::runtime_error("YADE's summary.json is missing, or a cylinder patch touched a sphere other than its own");
       for (std::size_t j = 0; j < travels.size(); ++j) {
-        c_force[j].push_back(interpolate(c.at("piston_displacement"), c.at("piston_force"), travels[j]));
-        y_force[j].push_back(interpolate(y.at("piston_displacement"), y.at("piston_force"), travels[j]));
+        const double fc = interpolate(c.at("piston_displacement"), c.at("piston_force"), travels[j]);
+        const double fy = interpolate(y.at("piston_displacement"), y.at("piston_force"), travels[j]);
+        if (!std::isfinite(fc) || !std::isfinite(fy))
+          throw std::runtime_error("a curve stops before " + fmt(1e3 * travels[j], "%.1f") + " mm of travel");
+        c_force[j].push_back(fc);
+        y_force[j].push_back(fy);
       }
-    } catch (const std::exception& e) {
-      report.fail(what + " realisation " + std::to_string(k), e.what());
+    } catch (const std::exception& ex) {
+      report.fail(realisation, ex.what());
       return;
     }
   }
-  for (std::size_t j = 0; j < travels.size(); ++j) {
-    const SampleSummary c = summarise(c_force[j]), y = summarise(y_force[j]);
-    const MeanDifference d = difference_of_means(c, y);
-    const std::string at = what + " force at " + fmt(1e3 * travels[j], "%.1f") + " mm travel";
-    check_t(report, at + " (N, mean +- s.e.)", mean_and_error(c.mean, c.se, "%.1f"), mean_and_error(y.mean, y.se, "%.1f"),
-            d, ", " + fmt(100.0 * d.difference / y.mean, "%+.1f") + " %", t_max);
-    report.info(at + ": scatter of one realisation (sd, N)", fmt(c.sd, "%.1f"), fmt(y.sd, "%.1f"), "chaos, not compared");
-  }
+  const double alpha_row = e.alpha / static_cast<double>(std::max<std::size_t>(1, travels.size()));
+  for (std::size_t j = 0; j < travels.size(); ++j)
+    compare_means(report, what + " force at " + fmt(1e3 * travels[j], "%.1f") + " mm travel", "N",
+                  summarise(c_force[j]), summarise(y_force[j]), 1.0, "%.1f", alpha_row);
 }
 
 }  // namespace

@@ -4,7 +4,6 @@
 #pragma once
 #include <cstddef>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <toml++/toml.h>
 #include <vector>
@@ -21,12 +20,9 @@ struct ShearSetting {
   fs::path scene, work;
 };
 
-// `doc` written as `name` into the work folder, for both codes.
+// `doc` written as `name` into the work folder, for both codes (throws if it cannot be).
 inline fs::path write_config(const ShearSetting& s, const toml::table& doc, const std::string& name) {
-  const fs::path f = s.work / name;
-  std::ofstream o(f);
-  o << "# written by crosscheck from " << s.scene.string() << "\n" << doc << "\n";
-  return f;
+  return write_run_config(s.work / name, doc, s.scene);
 }
 
 // --normal-stress sigma, at full precision.
@@ -44,7 +40,8 @@ inline std::string load_run_name(double sigma, std::size_t realisation) {
 
 // The ensemble comparison of the loads (shear_ensemble.cpp): realisations 1..N-1 of every
 // load in both codes from perturbed copies of the sample (realisation 0 is the load run of
-// compare_load), then the mean strengths, C and Phi compared against their standard errors.
+// compare_load), then the mean strengths, their mean relative difference, C and Phi judged by
+// Welch's t test.
 // `doc` is the scene with the sample's packing_file set. Nothing when the tolerance table
 // asks for fewer than two realisations.
 void compare_shear_ensemble(const CheckContext& ctx, const ShearSetting& s, Report& report, const toml::table& doc,

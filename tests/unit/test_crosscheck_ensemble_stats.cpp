@@ -12,6 +12,7 @@
 namespace {
 
 using crosscheck::compare_linear;
+using crosscheck::compare_mean_relative;
 using crosscheck::difference_of_means;
 using crosscheck::line_weights;
 using crosscheck::perturbed_packing;
@@ -32,17 +33,40 @@ TEST(CrosscheckEnsembleStats, SummarisesWithTheSampleStandardDeviation) {
   EXPECT_EQ(one.se, 0.0);
 }
 
-// Means 10 and 7, standard errors 3 and 4: difference 3, se 5, t 0.6.
+// Means 10 and 7, standard errors 3 and 4 of 4 runs each: difference 3, se 5, t 0.6;
+// Welch-Satterthwaite df = 25^2 / (9^2 / 3 + 16^2 / 3) = 1875 / 337; p = 2 P(T > 0.6) under
+// Student's t with that df = 0.57211 (the density integrated numerically from 0.6 to infinity,
+// in Python, independently of Boost). With a large df, p tends to the normal two-sided value
+// 2 (1 - Phi(0.6)) = 0.548506.
 TEST(CrosscheckEnsembleStats, WelchStatisticOfTwoMeans) {
   const SampleSummary colza{4, 10.0, 6.0, 3.0}, yade{4, 7.0, 8.0, 4.0};
   const auto d = difference_of_means(colza, yade);
   EXPECT_DOUBLE_EQ(d.difference, 3.0);
   EXPECT_DOUBLE_EQ(d.se, 5.0);
   EXPECT_DOUBLE_EQ(d.t, 0.6);
-  // Without scatter, equal means pass (t = 0) and different ones cannot be judged (NaN).
+  EXPECT_NEAR(d.df, 1875.0 / 337.0, 1e-12);
+  EXPECT_NEAR(d.p, 0.57211, 1e-5);
+  const SampleSummary big_c{100000, 10.0, 0.0, 3.0}, big_y{100000, 7.0, 0.0, 4.0};
+  EXPECT_NEAR(difference_of_means(big_c, big_y).p, 0.548506, 1e-5);
+  // Without scatter, equal means pass (t = 0, p = 1) and different ones fail (p = 0).
   const SampleSummary a{2, 1.0, 0.0, 0.0}, b{2, 2.0, 0.0, 0.0};
   EXPECT_EQ(difference_of_means(a, a).t, 0.0);
+  EXPECT_EQ(difference_of_means(a, a).p, 1.0);
   EXPECT_TRUE(std::isnan(difference_of_means(a, b).t));
+  EXPECT_EQ(difference_of_means(a, b).p, 0.0);
+}
+
+// t = 2 with 10 degrees of freedom: two-sided p = 0.073388 (integrated as above; tables of
+// Student's t bracket it: the two-sided 0.05 critical value at df 10 is 2.228, the 0.10 one
+// 1.812).
+TEST(CrosscheckEnsembleStats, TwoSidedPValueOfStudentsT) {
+  // Two groups of 11 runs with equal standard errors: df = (2 v)^2 / (2 v^2 / 10) = 20; to get
+  // df = 10 use one group without scatter: df = v^2 / (v^2 / 10) = 10.
+  const SampleSummary c{11, 2.0, 0.0, 1.0}, y{11, 0.0, 0.0, 0.0};
+  const auto d = difference_of_means(c, y);
+  EXPECT_DOUBLE_EQ(d.t, 2.0);
+  EXPECT_DOUBLE_EQ(d.df, 10.0);
+  EXPECT_NEAR(d.p, 0.07339, 1e-5);
 }
 
 // Loads 1, 2, 3: mean 2, Sxx = 2, slope weights (-1/2, 0, 1/2), intercept weights
@@ -81,6 +105,20 @@ TEST(CrosscheckEnsembleStats, PropagatesStandardErrorsThroughALinearCombination)
   EXPECT_DOUBLE_EQ(c.yade_se, std::sqrt(2.0));
   EXPECT_DOUBLE_EQ(c.difference.difference, 1.0);
   EXPECT_DOUBLE_EQ(c.difference.se, std::sqrt(13.0) / 2.0);
+  // Satterthwaite over the four terms w^2 se^2 = 1/4, 1, 1, 1 of means of 8 runs:
+  // df = (13/4)^2 / ((1/16 + 1 + 1 + 1) / 7) = 7 (169/16) / (49/16) = 169/7.
+  EXPECT_NEAR(c.difference.df, 169.0 / 7.0, 1e-12);
+}
+
+// Two loads: colza's means 11 and 20, YADE's 10 and 25 (se 1 and 2 each, 8 runs): relative
+// differences +0.1 and -0.2, mean -0.05; weights 1/20 and 1/50, se = sqrt((1/20)^2 (1 + 1) +
+// (1/50)^2 (4 + 4)).
+TEST(CrosscheckEnsembleStats, MeanRelativeDifferenceOverTheLoads) {
+  const std::vector<SampleSummary> colza = {{8, 11.0, 0.0, 1.0}, {8, 20.0, 0.0, 2.0}};
+  const std::vector<SampleSummary> yade = {{8, 10.0, 0.0, 1.0}, {8, 25.0, 0.0, 2.0}};
+  const auto r = compare_mean_relative(colza, yade);
+  EXPECT_NEAR(r.difference.difference, -0.05, 1e-15);
+  EXPECT_NEAR(r.difference.se, std::sqrt(2.0 / 400.0 + 8.0 / 2500.0), 1e-15);
 }
 
 // Comments kept, radii unchanged, every coordinate within the amplitude and most of them moved;
@@ -108,6 +146,9 @@ TEST(CrosscheckEnsembleStats, PerturbsCoordinatesOnlyAndRepeatably) {
   }
   EXPECT_EQ(moved, 6);
   EXPECT_THROW(perturbed_packing("0.1 0.2 x\n", 1, a), std::runtime_error);
+  EXPECT_THROW(perturbed_packing("0.1 0.2 0.3 0.004 5\n", 1, a), std::runtime_error);
+  // Blank and indented comment lines pass through, as colza's reader skips them.
+  EXPECT_EQ(perturbed_packing("  # note\n \t\r\n", 1, a), "  # note\n \t\r\n");
 }
 
 }  // namespace

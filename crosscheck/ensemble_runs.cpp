@@ -1,0 +1,56 @@
+#include "ensemble_runs.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+#include "result_files.hpp"
+
+namespace crosscheck {
+
+EnsembleSpec read_ensemble(const toml::table& t) {
+  EnsembleSpec e;
+  e.realisations = static_cast<std::size_t>(std::max(1.0, tol_number(t, "ensemble_realisations", 1.0)));
+  e.amplitude = tol_number(t, "ensemble_perturbation", e.amplitude);
+  e.alpha = tol_number(t, "ensemble_alpha", e.alpha);
+  return e;
+}
+
+void write_perturbed_packing(const std::string& text, const fs::path& file, std::uint64_t seed, double amplitude) {
+  std::ofstream out(file);
+  out << perturbed_packing(text, seed, amplitude);
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+bool run_realisations(const std::vector<RealisationRun>& runs, Report& report, const std::string& what) {
+  std::vector<std::function<bool()>> jobs;
+  for (const RealisationRun& r : runs) jobs.push_back(r.run);
+  const std::vector<bool> ok = run_in_parallel(jobs);
+  bool all = true;
+  for (std::size_t j = 0; j < runs.size(); ++j)
+    if (!ok[j]) {
+      report.fail(what, runs[j].out.filename().string() + " failed (" + runs[j].out.string() + ".log)");
+      all = false;
+    }
+  return all;
+}
+
+std::string mean_and_error(double mean, double se, const char* f) { return fmt(mean, f) + " +- " + fmt(se, f); }
+
+void check_p(Report& report, const std::string& metric, const std::string& colza, const std::string& yade,
+             const MeanDifference& d, const std::string& note, double alpha_row) {
+  const bool pass = std::isfinite(d.p) && d.p >= alpha_row;
+  report.add(Row{metric, colza, yade, "t = " + fmt(d.t, "%.2f") + ", p = " + fmt(d.p, "%.2g") + note,
+                 "p >= " + fmt(alpha_row, "%.2g"), pass, false});
+}
+
+void compare_means(Report& report, const std::string& metric, const std::string& unit, const SampleSummary& colza,
+                   const SampleSummary& yade, double scale, const char* f, double alpha_row) {
+  const MeanDifference d = difference_of_means(colza, yade);
+  check_p(report, metric + " (" + unit + ", mean +- s.e.)", mean_and_error(scale * colza.mean, scale * colza.se, f),
+          mean_and_error(scale * yade.mean, scale * yade.se, f), d,
+          ", " + fmt(100.0 * d.difference / yade.mean, "%+.1f") + " %", alpha_row);
+  report.info(metric + ": scatter of one realisation (sd, " + unit + ")", fmt(scale * colza.sd, f),
+              fmt(scale * yade.sd, f), "chaos, not compared");
+}
+
+}  // namespace crosscheck
