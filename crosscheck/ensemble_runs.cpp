@@ -1,6 +1,7 @@
 #include "ensemble_runs.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 #include "result_files.hpp"
@@ -21,7 +22,10 @@ void write_perturbed_packing(const std::string& text, const fs::path& file, std:
   if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 
-bool run_realisations(const std::vector<RealisationRun>& runs, Report& report, const std::string& what) {
+bool run_realisations(const std::vector<RealisationRun>& runs, Report& report, const std::string& what, double amplitude) {
+  std::printf("crosscheck: %s: %zu more runs of each code (packings moved by up to %g m)...\n", what.c_str(),
+              runs.size() / 2, amplitude);
+  std::fflush(stdout);
   std::vector<std::function<bool()>> jobs;
   for (const RealisationRun& r : runs) jobs.push_back(r.run);
   const std::vector<bool> ok = run_in_parallel(jobs);

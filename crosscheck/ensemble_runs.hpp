@@ -32,8 +32,9 @@ struct RealisationRun {
   fs::path out;
   std::function<bool()> run;
 };
-// Runs them kParallelRuns at a time; a FAIL row per run that failed; true if none did.
-bool run_realisations(const std::vector<RealisationRun>& runs, Report& report, const std::string& what);
+// Says what it starts (`what`, the runs per code, the perturbation amplitude a in m), runs them
+// kParallelRuns at a time; a FAIL row per run that failed; true if none did.
+bool run_realisations(const std::vector<RealisationRun>& runs, Report& report, const std::string& what, double amplitude);
 
 // "21.910 +- 0.780"
 std::string mean_and_error(double mean, double se, const char* f = "%.3f");

@@ -120,10 +120,7 @@ void compare_ensemble(const CheckContext& ctx, Report& report, const std::string
     report.fail(what, ex.what());
     return;
   }
-  std::printf("crosscheck: %s: %zu more runs of each code (packings moved by up to %g m)...\n", what.c_str(),
-              runs.size() / 2, e.amplitude);
-  std::fflush(stdout);
-  if (!run_realisations(runs, report, what)) return;
+  if (!run_realisations(runs, report, what, e.amplitude)) return;
 
   const std::vector<double> travels = travels_of(t);
   std::vector<std::vector<double>> c_force(travels.size()), y_force(travels.size());

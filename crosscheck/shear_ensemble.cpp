@@ -12,7 +12,6 @@
 // descends at its clamped speed until the stress is nearly reached, and eight such runs ended
 // within 1 um of plate height of each other.)
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -51,10 +50,7 @@ void compare_shear_ensemble(const CheckContext& ctx, const ShearSetting& s, Repo
     report.fail(what, ex.what());
     return;
   }
-  std::printf("crosscheck: %s: %zu more runs of each code (packings moved by up to %g m)...\n", what.c_str(),
-              runs.size() / 2, e.amplitude);
-  std::fflush(stdout);
-  if (!run_realisations(runs, report, what)) return;
+  if (!run_realisations(runs, report, what, e.amplitude)) return;
 
   // Every realisation's strength (realisation 0 is the load run of compare_load).
   std::vector<SampleSummary> colza, yade;
