@@ -14,16 +14,32 @@ namespace crosscheck {
 
 namespace {
 
+// Ctrl-C. std::system ignores SIGINT in this process while any command runs (glibc counts the
+// calls in progress), so crosscheck learns of a Ctrl-C from a command stopped by it (killed by
+// SIGINT, or a shell's or colza's exit code 128 + SIGINT), sets `interrupted`, and raises
+// SIGINT itself once no command is running: at once for a single run, after the workers have
+// joined for run_in_parallel (whose workers start no job once it is set). A YADE run notices
+// Ctrl-C only when its O.run() returns, so it may finish its loading first.
+std::atomic<bool> interrupted{false};
+std::atomic<int> parallel_sections{0};
+
 // Runs a shell command with its output to `log`; returns its exit status (-1 if it did not
-// exit normally). std::system ignores SIGINT in this process while the command runs, so a
-// command stopped by Ctrl-C (killed by SIGINT, or the shell's 128 + SIGINT) raises SIGINT
-// here afterwards: crosscheck stops instead of starting its next run.
+// exit normally).
 int run_logged(const std::string& command, const fs::path& log) {
   const std::string full = command + " > " + quote(log.string()) + " 2>&1 < /dev/null";
   const int raw = std::system(full.c_str());
-  if (raw != -1 && ((WIFSIGNALED(raw) && WTERMSIG(raw) == SIGINT) || (WIFEXITED(raw) && WEXITSTATUS(raw) == 128 + SIGINT)))
-    std::raise(SIGINT);
+  if (raw != -1 && ((WIFSIGNALED(raw) && WTERMSIG(raw) == SIGINT) || (WIFEXITED(raw) && WEXITSTATUS(raw) == 128 + SIGINT))) {
+    interrupted = true;
+    if (parallel_sections == 0) std::raise(SIGINT);
+  }
   return (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
+}
+
+// Whether `out` may be removed before a run writes there: it holds what a run of crosscheck
+// wrote (a summary.json, or the log beside it), or nothing. A user's folder of that name is not.
+bool removable_run_folder(const fs::path& out, const fs::path& log) {
+  if (!fs::exists(out)) return true;
+  return fs::exists(log) || fs::exists(out / "summary.json") || fs::is_empty(out);
 }
 
 // The last `lines` lines of a log, indented.
@@ -61,6 +77,11 @@ bool CodeRuns::run(const std::string& code, const std::string& command, const fs
   const fs::path log = out.string() + ".log";
   // An earlier run's results must not pass for this run's if it fails (YADE's scripts write
   // their results only at the end, colza replaces them only when it succeeds).
+  if (!removable_run_folder(out, log)) {
+    std::fprintf(stderr, "crosscheck: %s: %s holds files crosscheck did not write; not running there\n", code.c_str(),
+                 out.string().c_str());
+    return false;
+  }
   fs::remove_all(out);
   fs::remove(log);
   const int status = run_logged(command, log);
@@ -97,9 +118,10 @@ std::vector<bool> run_in_parallel(const std::vector<std::function<bool()>>& jobs
   std::atomic<std::size_t> next{0};
   const unsigned workers = static_cast<unsigned>(std::min<std::size_t>(kParallelRuns, jobs.size()));
   std::vector<std::thread> pool;
+  ++parallel_sections;
   for (unsigned w = 0; w < workers; ++w)
     pool.emplace_back([&] {
-      for (std::size_t j = next++; j < jobs.size(); j = next++) {
+      for (std::size_t j = next++; j < jobs.size() && !interrupted; j = next++) {
         try {
           ok[j] = jobs[j]() ? 1 : 0;
         } catch (const std::exception& e) {
@@ -108,6 +130,7 @@ std::vector<bool> run_in_parallel(const std::vector<std::function<bool()>>& jobs
       }
     });
   for (auto& t : pool) t.join();
+  if (--parallel_sections == 0 && interrupted) std::raise(SIGINT);
   return {ok.begin(), ok.end()};
 }
 

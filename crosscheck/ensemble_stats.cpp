@@ -36,13 +36,19 @@ struct VarianceTerm {
 // (Welch 1947, Satterthwaite 1946), t and the two-sided p-value.
 MeanDifference difference_with(double difference, const std::vector<VarianceTerm>& terms) {
   double variance = 0.0, df_denominator = 0.0;
+  bool testable = true;  // a mean of one run has no standard error to judge by
   for (const VarianceTerm& v : terms) {
     variance += v.variance;
     if (v.n > 1) df_denominator += v.variance * v.variance / static_cast<double>(v.n - 1);
+    else testable = false;
   }
   MeanDifference d;
   d.difference = difference;
   d.se = std::sqrt(variance);
+  if (!testable) {
+    d.t = d.p = std::numeric_limits<double>::quiet_NaN();
+    return d;
+  }
   if (d.se == 0.0) {
     d.t = difference == 0.0 ? 0.0 : std::numeric_limits<double>::quiet_NaN();
     d.p = difference == 0.0 ? 1.0 : 0.0;

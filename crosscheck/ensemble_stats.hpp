@@ -21,7 +21,8 @@ SampleSummary summarise(const std::vector<double>& values);
 // An estimated difference d of the two codes with its standard error se, the
 // Welch-Satterthwaite degrees of freedom df, t = d / se and the two-sided p-value of t under
 // Student's t with df degrees of freedom (the probability of |t| at least this large if the
-// codes agree). With se = 0: t = 0 and p = 1 when d = 0, else t = NaN and p = 0.
+// codes agree). With se = 0: t = 0 and p = 1 when d = 0, else t = NaN and p = 0. A mean of
+// fewer than two runs cannot be judged: t and p are NaN.
 struct MeanDifference {
   double difference = 0.0, se = 0.0, df = 0.0, t = 0.0, p = 1.0;
 };

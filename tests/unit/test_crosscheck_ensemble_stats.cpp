@@ -54,6 +54,9 @@ TEST(CrosscheckEnsembleStats, WelchStatisticOfTwoMeans) {
   EXPECT_EQ(difference_of_means(a, a).p, 1.0);
   EXPECT_TRUE(std::isnan(difference_of_means(a, b).t));
   EXPECT_EQ(difference_of_means(a, b).p, 0.0);
+  // One run on a side: nothing to judge by (the row fails).
+  const SampleSummary one = summarise({5.0});
+  EXPECT_TRUE(std::isnan(difference_of_means(one, summarise({1, 2, 3, 4})).p));
 }
 
 // t = 2 with 10 degrees of freedom: two-sided p = 0.073388 (integrated as above; tables of
