@@ -1,5 +1,6 @@
 #include "ensemble_runs.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>

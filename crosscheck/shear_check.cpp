@@ -126,9 +126,8 @@ void check_one_realisation(Report& report, bool by_ensemble, const std::string& 
 std::optional<std::pair<double, double>> compare_load(const CheckContext& ctx, const ShearSetting& s,
                                                       Report& report, const fs::path& config, double sigma,
                                                       double window_start, double window_end, bool by_ensemble) {
-  const std::string name = load_run_name(sigma, 0);
   const std::string l = s.label + " " + fmt(1e-3 * sigma, "%.2f") + " kPa";
-  const fs::path c_out = s.work / ("colza_" + name), y_out = s.work / ("yade_" + name);
+  const fs::path c_out = load_run_folder(s, "colza", sigma, 0), y_out = load_run_folder(s, "yade", sigma, 0);
   const std::vector<std::string> arg = normal_stress_argument(sigma);
   std::printf("crosscheck: %s: running colza and YADE...\n", l.c_str());
   std::fflush(stdout);

@@ -42,7 +42,7 @@ void compare_shear_ensemble(const CheckContext& ctx, const ShearSetting& s, Repo
         d["shear_box"].as_table()->insert_or_assign("packing_file", packing_k.string());
         const fs::path config = write_run_config(s.work / ("shear_" + s.size + "_" + name + ".toml"), d, s.scene);
         const std::vector<std::string> arg = normal_stress_argument(sigma);
-        const fs::path c_out = s.work / ("colza_" + name), y_out = s.work / ("yade_" + name);
+        const fs::path c_out = load_run_folder(s, "colza", sigma, k), y_out = load_run_folder(s, "yade", sigma, k);
         runs.push_back({c_out, [&ctx, config, arg, c_out] { return ctx.runs.run_colza("shear", config, c_out, {}, arg); }});
         runs.push_back({y_out, [&ctx, config, arg, y_out] { return ctx.runs.run_yade("run_shear.py", config, y_out, arg); }});
       }
@@ -57,12 +57,11 @@ void compare_shear_ensemble(const CheckContext& ctx, const ShearSetting& s, Repo
   for (double sigma : loads) {
     std::vector<double> c, y;
     for (std::size_t k = 0; k < e.realisations; ++k) {
-      const std::string name = load_run_name(sigma, k);
       try {
-        c.push_back(read_json(s.work / ("colza_" + name) / "summary.json").at("shear_strength").get<double>());
-        y.push_back(read_json(s.work / ("yade_" + name) / "summary.json").at("shear_strength").get<double>());
+        c.push_back(read_json(load_run_folder(s, "colza", sigma, k) / "summary.json").at("shear_strength").get<double>());
+        y.push_back(read_json(load_run_folder(s, "yade", sigma, k) / "summary.json").at("shear_strength").get<double>());
       } catch (const std::exception& ex) {
-        report.fail(what + " " + name, std::string("no shear strength: ") + ex.what());
+        report.fail(what + " " + load_run_name(sigma, k), std::string("no shear strength: ") + ex.what());
         return;
       }
     }

@@ -38,6 +38,11 @@ inline std::string load_run_name(double sigma, std::size_t realisation) {
   return name;
 }
 
+// The run folder of one code ("colza" or "yade") for that load and realisation.
+inline fs::path load_run_folder(const ShearSetting& s, const std::string& code, double sigma, std::size_t realisation) {
+  return s.work / (code + "_" + load_run_name(sigma, realisation));
+}
+
 // The ensemble comparison of the loads (shear_ensemble.cpp): realisations 1..N-1 of every
 // load in both codes from perturbed copies of the sample (realisation 0 is the load run of
 // compare_load), then the mean strengths, their mean relative difference, C and Phi judged by
