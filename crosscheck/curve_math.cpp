@@ -47,17 +47,30 @@ MaxDifference max_difference(const std::vector<double>& c, const std::vector<dou
   return {den, max_y, den > 0 ? num / den : 0.0};
 }
 
-std::pair<double, double> mohr_coulomb(const std::vector<double>& sigma, const std::vector<double>& tau) {
-  const double n = static_cast<double>(sigma.size());
-  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  for (std::size_t k = 0; k < sigma.size(); ++k) {
-    sx += sigma[k];
-    sy += tau[k];
-    sxx += sigma[k] * sigma[k];
-    sxy += sigma[k] * tau[k];
+LineWeights line_weights(const std::vector<double>& x) {
+  const double n = static_cast<double>(x.size());
+  double mean = 0.0;
+  for (double v : x) mean += v;
+  mean /= n;
+  double sxx = 0.0;
+  for (double v : x) sxx += (v - mean) * (v - mean);
+  LineWeights w;
+  for (double v : x) {
+    w.slope.push_back((v - mean) / sxx);
+    w.intercept.push_back(1.0 / n - mean * w.slope.back());
   }
-  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  return {(sy - slope * sx) / n, std::atan(slope) * 180.0 / std::numbers::pi};
+  return w;
 }
+
+std::pair<double, double> mohr_coulomb(const std::vector<double>& sigma, const std::vector<double>& tau) {
+  const LineWeights w = line_weights(sigma);
+  double cohesion = 0.0, slope = 0.0;
+  for (std::size_t k = 0; k < sigma.size(); ++k) {
+    cohesion += w.intercept[k] * tau[k];
+    slope += w.slope[k] * tau[k];
+  }
+  return {cohesion, std::atan(slope) * 180.0 / std::numbers::pi};
+}
+
 
 }  // namespace crosscheck

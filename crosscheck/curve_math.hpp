@@ -1,6 +1,6 @@
 // The arithmetic of comparing curves: linear interpolation, the rms difference of two
 // curves over a range, the largest difference over their first rows, and the Mohr-Coulomb
-// line through (normal stress, shear strength).
+// line through (normal stress, shear strength) and the least-squares weights behind it.
 #pragma once
 #include <cstddef>
 #include <utility>
@@ -29,7 +29,16 @@ struct MaxDifference {
 };
 MaxDifference max_difference(const std::vector<double>& c, const std::vector<double>& y, std::size_t rows);
 
-// Least-squares line tau = C + sigma tan(Phi); returns (C in the unit of tau, Phi in degrees).
+// Weights of the least-squares line y = a + b x through points (x_k, y_k): a = sum_k
+// intercept[k] y_k and b = sum_k slope[k] y_k, with slope[k] = (x_k - mean x) / Sxx and
+// intercept[k] = 1/n - mean x slope[k]. Needs two distinct x.
+struct LineWeights {
+  std::vector<double> intercept, slope;
+};
+LineWeights line_weights(const std::vector<double>& x);
+
+// Least-squares line tau = C + sigma tan(Phi) (line_weights); returns (C in the unit of tau,
+// Phi in degrees).
 std::pair<double, double> mohr_coulomb(const std::vector<double>& sigma, const std::vector<double>& tau);
 
 }  // namespace crosscheck

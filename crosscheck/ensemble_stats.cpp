@@ -98,21 +98,6 @@ LinearComparison compare_mean_relative(const std::vector<SampleSummary>& colza, 
   return compare_linear(weights, colza, yade);
 }
 
-LineWeights line_weights(const std::vector<double>& x) {
-  const double n = static_cast<double>(x.size());
-  double mean = 0.0;
-  for (double v : x) mean += v;
-  mean /= n;
-  double sxx = 0.0;
-  for (double v : x) sxx += (v - mean) * (v - mean);
-  LineWeights w;
-  for (double v : x) {
-    w.slope.push_back((v - mean) / sxx);
-    w.intercept.push_back(1.0 / n - mean * w.slope.back());
-  }
-  return w;
-}
-
 namespace {
 
 // splitmix64 (Steele, Lea and Flood 2014): a fixed sequence of 64-bit numbers per seed.

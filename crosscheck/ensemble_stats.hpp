@@ -29,10 +29,10 @@ struct MeanDifference {
 MeanDifference difference_of_means(const SampleSummary& colza, const SampleSummary& yade);
 
 // A linear combination sum_k w_k mean_k of per-load means, for each code (with w the weights
-// of a least-squares line's intercept or slope, line_weights: the Mohr-Coulomb C or tan(Phi)
-// of the mean strengths), and the difference of the codes' combinations, its standard error
-// (se^2 = sum_k w_k^2 (se_colza,k^2 + se_yade,k^2), every run independent) and
-// Welch-Satterthwaite degrees of freedom over the 2 K variance terms.
+// of a least-squares line's intercept or slope, line_weights in curve_math.hpp: the
+// Mohr-Coulomb C or tan(Phi) of the mean strengths), and the difference of the codes'
+// combinations, its standard error (se^2 = sum_k w_k^2 (se_colza,k^2 + se_yade,k^2), every
+// run independent) and Welch-Satterthwaite degrees of freedom over the 2 K variance terms.
 struct LinearComparison {
   double colza = 0.0, yade = 0.0, colza_se = 0.0, yade_se = 0.0;
   MeanDifference difference;
@@ -44,14 +44,6 @@ LinearComparison compare_linear(const std::vector<double>& weights, const std::v
 // mean_yade,k: compare_linear with weights 1 / (K mean_yade,k) (YADE's means taken as fixed
 // denominators), so its difference is the pooled relative difference.
 LinearComparison compare_mean_relative(const std::vector<SampleSummary>& colza, const std::vector<SampleSummary>& yade);
-
-// Weights of the least-squares line y = a + b x through points (x_k, y_k): a = sum_k
-// intercept[k] y_k and b = sum_k slope[k] y_k, with slope[k] = (x_k - mean x) / Sxx and
-// intercept[k] = 1/n - mean x slope[k]. Needs two distinct x.
-struct LineWeights {
-  std::vector<double> intercept, slope;
-};
-LineWeights line_weights(const std::vector<double>& x);
 
 // A packing file's text ("x y z r" per line; blank lines and lines whose first non-blank
 // character is '#' are kept as they are, as colza's reader skips them) with every coordinate

@@ -15,6 +15,7 @@
 #include <numbers>
 #include <string>
 #include <vector>
+#include "curve_math.hpp"
 #include "ensemble_runs.hpp"
 #include "result_files.hpp"
 #include "shear_setting.hpp"

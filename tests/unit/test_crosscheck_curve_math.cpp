@@ -10,6 +10,7 @@
 namespace {
 
 using crosscheck::interpolate;
+using crosscheck::line_weights;
 using crosscheck::max_difference;
 using crosscheck::mohr_coulomb;
 using crosscheck::rms_difference;
@@ -65,6 +66,29 @@ TEST(CrosscheckCurveMath, MohrCoulombLineThroughExactPoints) {
   const auto [c, phi] = mohr_coulomb(sigma, tau);
   EXPECT_NEAR(c, 5000.0, 1e-8);
   EXPECT_NEAR(phi, 30.0, 1e-10);
+}
+
+
+// Loads 1, 2, 3: mean 2, Sxx = 2, slope weights (-1/2, 0, 1/2), intercept weights
+// 1/3 - 2 (-1/2, 0, 1/2) = (4/3, 1/3, -2/3). On tau = 5 + 2 sigma (7, 9, 11) they give the
+// intercept 28/3 + 3 - 22/3 = 5 and the slope 2.
+TEST(CrosscheckCurveMath, LeastSquaresLineWeights) {
+  const auto w = line_weights({1.0, 2.0, 3.0});
+  ASSERT_EQ(w.slope.size(), 3u);
+  EXPECT_DOUBLE_EQ(w.slope[0], -0.5);
+  EXPECT_DOUBLE_EQ(w.slope[1], 0.0);
+  EXPECT_DOUBLE_EQ(w.slope[2], 0.5);
+  EXPECT_DOUBLE_EQ(w.intercept[0], 4.0 / 3.0);
+  EXPECT_DOUBLE_EQ(w.intercept[1], 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(w.intercept[2], -2.0 / 3.0);
+  const std::vector<double> tau = {7.0, 9.0, 11.0};
+  double a = 0.0, b = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    a += w.intercept[k] * tau[k];
+    b += w.slope[k] * tau[k];
+  }
+  EXPECT_NEAR(a, 5.0, 1e-14);
+  EXPECT_NEAR(b, 2.0, 1e-14);
 }
 
 }  // namespace

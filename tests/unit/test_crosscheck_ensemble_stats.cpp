@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "crosscheck/curve_math.hpp"  // line_weights
 #include "crosscheck/ensemble_stats.hpp"
 
 namespace {
@@ -70,28 +71,6 @@ TEST(CrosscheckEnsembleStats, TwoSidedPValueOfStudentsT) {
   EXPECT_DOUBLE_EQ(d.t, 2.0);
   EXPECT_DOUBLE_EQ(d.df, 10.0);
   EXPECT_NEAR(d.p, 0.07339, 1e-5);
-}
-
-// Loads 1, 2, 3: mean 2, Sxx = 2, slope weights (-1/2, 0, 1/2), intercept weights
-// 1/3 - 2 (-1/2, 0, 1/2) = (4/3, 1/3, -2/3). On tau = 5 + 2 sigma (7, 9, 11) they give the
-// intercept 28/3 + 3 - 22/3 = 5 and the slope 2.
-TEST(CrosscheckEnsembleStats, LeastSquaresLineWeights) {
-  const auto w = line_weights({1.0, 2.0, 3.0});
-  ASSERT_EQ(w.slope.size(), 3u);
-  EXPECT_DOUBLE_EQ(w.slope[0], -0.5);
-  EXPECT_DOUBLE_EQ(w.slope[1], 0.0);
-  EXPECT_DOUBLE_EQ(w.slope[2], 0.5);
-  EXPECT_DOUBLE_EQ(w.intercept[0], 4.0 / 3.0);
-  EXPECT_DOUBLE_EQ(w.intercept[1], 1.0 / 3.0);
-  EXPECT_DOUBLE_EQ(w.intercept[2], -2.0 / 3.0);
-  const std::vector<double> tau = {7.0, 9.0, 11.0};
-  double a = 0.0, b = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    a += w.intercept[k] * tau[k];
-    b += w.slope[k] * tau[k];
-  }
-  EXPECT_NEAR(a, 5.0, 1e-14);
-  EXPECT_NEAR(b, 2.0, 1e-14);
 }
 
 // Two loads 1 and 3: slope weights (-1/2, 1/2). colza's means 4 and 8 (se 1 and 2), YADE's 4
