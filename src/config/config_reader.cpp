@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/input_file.hpp"
+
 namespace colza {
 
 namespace {
@@ -32,11 +34,9 @@ std::string format_number(double x) {
 // ---- ConfigReader -------------------------------------------------------------------
 
 ConfigReader ConfigReader::from_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
-    throw ConfigError(path, "", "is not a file (a config is a TOML file, e.g. data/oedometer.toml)");
+  if (const std::string why = unreadable_file_reason(path); !why.empty())
+    throw ConfigError(path, "", "the config file " + why + " (a config is a TOML file, e.g. data/oedometer.toml)");
   std::ifstream in(path);
-  if (!in) throw ConfigError(path, "", "cannot open the config file");
   std::stringstream buffer;
   buffer << in.rdbuf();
   return from_string(buffer.str(), path);
@@ -146,10 +146,6 @@ bool ConfigNode::has(const std::string& key) const { return table_ && table_->co
 
 bool ConfigNode::is_string(const std::string& key) const {
   return table_ && table_->get(key) && table_->get(key)->is_string();
-}
-
-void ConfigNode::accept(const std::string& key) const {
-  if (has(key)) reader_->used_.insert(full(key));
 }
 
 double ConfigNode::number(const std::string& key, double fallback) const {

@@ -36,8 +36,6 @@ class ConfigNode {
   bool is_string(const std::string& key) const;
   ConfigNode table(const std::string& key) const;              // empty view if absent
   std::vector<ConfigNode> table_array(const std::string& key) const;
-  // Marks a whole sub-table as known without reading it (e.g. parameters of an inactive slot).
-  void accept(const std::string& key) const;
   // Raises a ConfigError about `key` of this table.
   [[noreturn]] void fail(const std::string& key, const std::string& reason) const;
   const std::string& path() const { return path_; }

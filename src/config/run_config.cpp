@@ -1,6 +1,9 @@
 #include "config/run_config.hpp"
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
+#include <numeric>
 
 #include "contact/slot_registry.hpp"
 #include "io/load_label.hpp"
@@ -177,6 +180,30 @@ std::string checked_packing_file(const ConfigReader& reader, const std::string& 
   return path;
 }
 
+// Two spheres of a scene at one centre have no contact normal (the law divides by their
+// distance): refused, naming both (in the scene's order: [[particles]], then the packing
+// file's spheres, the last `from_packing` of them). Sorted by position, O(n log n).
+void refuse_shared_centres(const ConfigNode& t, const std::vector<SceneParticle>& particles, std::size_t from_packing) {
+  std::vector<std::size_t> order(particles.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  const auto key = [&](std::size_t i) {
+    const Vec3& x = particles[i].position;
+    return std::array<double, 4>{x[0], x[1], x[2], static_cast<double>(i)};
+  };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const std::size_t i = order[k - 1], j = order[k];
+    if (particles[i].position != particles[j].position) continue;
+    const std::size_t first_from_packing = particles.size() - from_packing;
+    const auto name = [&](std::size_t n) {
+      return n < first_from_packing ? "particles[" + std::to_string(n) + "]"
+                                    : "sphere " + std::to_string(n - first_from_packing + 1) + " of packing_file";
+    };
+    t.fail(j < first_from_packing ? "particles" : "packing_file",
+           name(i) + " and " + name(j) + " have the same centre: their contact has no normal");
+  }
+}
+
 SceneSpec read_scene(const ConfigNode& t, const ConfigReader& reader) {
   SceneSpec s;
   s.steps = t.integer("steps", 0, 1);
@@ -188,13 +215,14 @@ SceneSpec read_scene(const ConfigNode& t, const ConfigReader& reader) {
   for (const ConfigNode& p : t.table_array("particles")) {
     SceneParticle sp;
     sp.position = p.vec3("position", Vec3::Zero());
-    sp.radius = p.positive("radius", 0.0);
     if (!p.has("radius")) p.fail("radius", "is required");
+    sp.radius = p.positive("radius", 0.0);
     sp.velocity = p.vec3("velocity", Vec3::Zero());
     sp.angular_velocity = p.vec3("angular_velocity", Vec3::Zero());
     sp.fixed = p.boolean("fixed", false);
     s.particles.push_back(sp);
   }
+  const std::size_t explicit_particles = s.particles.size();
   if (!s.packing_file.empty()) {
     const std::string key = t.path() + ".packing_file";
     for (const PackedSphere& ps : read_packing(resolve_input_path(reader, key, s.packing_file), key)) {
@@ -204,6 +232,7 @@ SceneSpec read_scene(const ConfigNode& t, const ConfigReader& reader) {
       s.particles.push_back(sp);
     }
   }
+  refuse_shared_centres(t, s.particles, s.particles.size() - explicit_particles);
   for (const ConfigNode& w : t.table_array("walls")) s.walls.push_back(read_scene_wall(w));
   for (std::int64_t i : s.record_particles)
     if (i < 0 || i >= static_cast<std::int64_t>(s.particles.size()))

@@ -58,7 +58,11 @@ Slot choose(const ConfigNode& contact, const std::string& slot_key, const std::s
   Slot chosen{};
   for (const auto& r : rows) {
     if (name == r.name) chosen = r.make(contact.table(r.name));
-    else contact.accept(r.name);  // parameters of an inactive implementation are allowed
+    // An inactive implementation's table may stay in the config (data/oedometer.toml keeps
+    // [contact.contact_bond] with bond = "none"), but it is checked all the same: a misspelt
+    // key or a value out of range there is an error too, not a silent surprise when the
+    // implementation is switched on.
+    else if (contact.has(r.name)) (void)r.make(contact.table(r.name));
   }
   return chosen;
 }

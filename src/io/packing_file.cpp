@@ -6,13 +6,15 @@
 #include <stdexcept>
 
 #include "config/config_error.hpp"
+#include "io/input_file.hpp"
 #include "io/output_dir.hpp"
 
 namespace colza {
 
 std::vector<PackedSphere> read_packing(const std::string& file, const std::string& key) {
+  if (const std::string why = unreadable_file_reason(file); !why.empty())
+    throw ConfigError(file, key, "the packing file " + why);
   std::ifstream in(file);
-  if (!in) throw ConfigError(file, key, "packing file not found or unreadable");
   std::vector<PackedSphere> spheres;
   std::string line;
   int line_no = 0;
@@ -22,8 +24,10 @@ std::vector<PackedSphere> read_packing(const std::string& file, const std::strin
     if (first == std::string::npos || line[first] == '#') continue;
     std::istringstream s(line);
     PackedSphere p;
-    if (!(s >> p.position[0] >> p.position[1] >> p.position[2] >> p.radius))
-      throw ConfigError(file, key, "line " + std::to_string(line_no) + ": expected 'x y z r'");
+    std::string extra;
+    if (!(s >> p.position[0] >> p.position[1] >> p.position[2] >> p.radius) || (s >> extra))
+      throw ConfigError(file, key,
+                        "line " + std::to_string(line_no) + ": expected four numbers 'x y z r' (m), got '" + line + "'");
     if (!(p.radius > 0.0) || !p.position.allFinite())
       throw ConfigError(file, key, "line " + std::to_string(line_no) + ": radius must be positive, values finite");
     p.line = line_no;

@@ -2,6 +2,7 @@
 
 #include <boost/random/mersenne_twister.hpp>
 #include <boost/random/uniform_real_distribution.hpp>
+#include <algorithm>
 #include <cmath>
 
 namespace colza {
@@ -43,8 +44,16 @@ std::vector<PackedSphere> generate_spheres(const GenerationRequest& req) {
   std::vector<std::vector<std::uint32_t>> grid(static_cast<std::size_t>(dims[0]) * dims[1] * dims[2]);
   auto coord = [&](const Vec3& x, int d) { return std::clamp(static_cast<int>((x[d] - lo[d]) / cell), 0, dims[d] - 1); };
 
+  // No packing of spheres of diameter >= d_min fills more than pi / sqrt(18) (~74 %, Kepler)
+  // of the region, so no more than `most` can ever be placed: a larger count is placed up to
+  // the first failures and reported by the caller, never allocated.
+  const double region_volume = req.region.shape == GenerationRegion::Shape::kBox
+                                   ? span.x() * span.y() * span.z()
+                                   : kPi * req.region.radius * req.region.radius * span.z();
+  const double smallest_sphere = kPi / 6.0 * std::pow(std::max(req.diameter_min, 1e-12), 3);
+  const double most = kPi / std::sqrt(18.0) * region_volume / smallest_sphere + 1.0;
   std::vector<PackedSphere> placed;
-  placed.reserve(req.count);
+  placed.reserve(static_cast<std::size_t>(std::min(static_cast<double>(req.count), most)));
   std::uint64_t failures = 0;
   while (placed.size() < req.count && failures < req.max_attempts) {
     const double d = req.diameter_min + (req.diameter_max - req.diameter_min) * unit(engine);

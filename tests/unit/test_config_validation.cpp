@@ -105,6 +105,49 @@ TEST(ConfigValidation, MissingPackingFileOfASceneIsNamed) {
   EXPECT_FALSE(c.integration.automatic_time_step);
 }
 
+TEST(ConfigValidation, PackingLinesWithMoreThanFourNumbersAndFoldersAreRefused) {
+  const colza::testing::ScratchDir dir;
+  const std::string cfg = dir.write("scene.toml",
+                                    "scenario = \"scene\"\n"
+                                    "[integration]\ntime_step = 1e-6\n"
+                                    "[scene]\nsteps = 10\npacking_file = \"p.txt\"\n");
+  for (const char* bad : {"0 0 0.01 0.003mm\n", "0 0 0.01 0.003 99\n"}) {
+    dir.write("p.txt", std::string("# x y z r\n") + bad);
+    const ConfigError e = expect_config_error([&] { load_run_config(Scenario::kScene, cfg, {}); });
+    EXPECT_EQ(e.key(), "scene.packing_file");
+    EXPECT_NE(e.reason().find("line 2: expected four numbers"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(dir / "p.txt");
+  std::filesystem::create_directory(dir / "p.txt");
+  const ConfigError e = expect_config_error([&] { load_run_config(Scenario::kScene, cfg, {}); });
+  EXPECT_NE(e.reason().find("is a directory, not a file"), std::string::npos) << e.what();
+}
+
+TEST(ConfigValidation, SceneSpheresAtOneCentreAndMissingRadiusAreRefused) {
+  const colza::testing::ScratchDir dir;
+  const std::string head = "scenario = \"scene\"\n[integration]\ntime_step = 1e-6\n[scene]\nsteps = 10\n";
+  const std::string twice = dir.write("twice.toml", head + "packing_file = \"p.txt\"\n"
+                                                          "[[scene.particles]]\nposition = [0.0, 0.0, 0.02]\nradius = 0.003\n");
+  dir.write("p.txt", "0 0 0.01 0.003\n0 0 0.02 0.003\n");
+  ConfigError e = expect_config_error([&] { load_run_config(Scenario::kScene, twice, {}); });
+  EXPECT_EQ(e.key(), "scene.packing_file");
+  EXPECT_NE(e.reason().find("particles[0] and sphere 2 of packing_file have the same centre"), std::string::npos)
+      << e.what();
+  const std::string no_radius = dir.write("no_radius.toml", head + "[[scene.particles]]\nposition = [0.0, 0.0, 0.02]\n");
+  e = expect_config_error([&] { load_run_config(Scenario::kScene, no_radius, {}); });
+  EXPECT_EQ(e.key(), "scene.particles[0].radius");
+  EXPECT_EQ(e.reason(), "is required");
+}
+
+TEST(ConfigValidation, AnInactiveContactLawsTableIsCheckedToo) {
+  // bond = "none", yet [contact.contact_bond] is read: a misspelt key or a bad value there is
+  // an error now, not when the bond is switched on.
+  ConfigError e = oedometer_error("[contact]\nbond = \"none\"\n[contact.contact_bond]\nnormal_strenght = 1.0\n");
+  EXPECT_EQ(e.key(), "contact.contact_bond.normal_strenght");
+  e = oedometer_error("[contact]\nbond = \"none\"\n[contact.contact_bond]\nnormal_strength = -1.0\n");
+  EXPECT_EQ(e.key(), "contact.contact_bond.normal_strength");
+}
+
 TEST(ConfigValidation, MissingPackingFileOfTheOedometerIsNamed) {
   const colza::testing::ScratchDir dir;
   const std::string cfg = dir.write("oed.toml", "[oedometer]\npacking_file = \"settled.txt\"\n");
