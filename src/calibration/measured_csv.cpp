@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "config/config_error.hpp"
+#include "io/format_number.hpp"
+#include "io/input_file.hpp"
 
 namespace colza::calibration {
 
@@ -33,8 +35,9 @@ bool skipped(const std::string& line) {
 std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const std::vector<std::string>& columns,
                                                   const std::string& spec_file, const std::string& key,
                                                   std::vector<std::size_t>& line_numbers) {
+  if (const std::string why = unreadable_file_reason(csv); !why.empty())
+    throw ConfigError(spec_file, key, "the measured data file " + csv + " " + why);
   std::ifstream in(csv);
-  if (!in) throw ConfigError(spec_file, key, "cannot open the measured data file " + csv);
   std::string line;
   std::size_t line_number = 0;
   bool have_header = false;
@@ -84,6 +87,19 @@ std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const 
                                                   const std::string& spec_file, const std::string& key) {
   std::vector<std::size_t> line_numbers;
   return read_csv_columns(csv, columns, spec_file, key, line_numbers);
+}
+
+void require_increasing(const std::vector<double>& x, const std::vector<std::size_t>& line_numbers,
+                        const std::string& column, const std::string& csv, const std::string& spec_file,
+                        const std::string& key) {
+  for (std::size_t k = 1; k < x.size(); ++k)
+    if (!(x[k] > x[k - 1]))
+      throw ConfigError(spec_file, key,
+                        csv + ": line " + std::to_string(line_numbers[k]) + ": " + column + " " +
+                            format_significant(x[k], 6) + " m does not increase on the previous row's " +
+                            format_significant(x[k - 1], 6) + " m (line " + std::to_string(line_numbers[k - 1]) +
+                            "): the displacement must increase strictly along the curve (sort the rows; remove "
+                            "repeated rows and any unloading part)");
 }
 
 }  // namespace colza::calibration

@@ -18,4 +18,11 @@ std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const 
                                                   const std::string& spec_file, const std::string& key,
                                                   std::vector<std::size_t>& line_numbers);
 
+// A measured curve's displacement column `x` (named `column`, in m) must increase strictly
+// from row to row: a ConfigError naming the rows' lines otherwise (sorting, repeated rows or
+// an unloading part would otherwise bend the fit or the strength without a word).
+void require_increasing(const std::vector<double>& x, const std::vector<std::size_t>& line_numbers,
+                        const std::string& column, const std::string& csv, const std::string& spec_file,
+                        const std::string& key);
+
 }  // namespace colza::calibration

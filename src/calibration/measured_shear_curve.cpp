@@ -58,13 +58,7 @@ MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double norm
   c.normal_stress = normal_stress;
   c.rows = d.size();
   if (d.empty()) throw ConfigError(spec_file, key, csv + ": the curve has no rows after its header line");
-  for (std::size_t k = 1; k < d.size(); ++k)
-    if (!(d[k] > d[k - 1]))
-      throw ConfigError(spec_file, key, csv + ": line " + std::to_string(lines[k]) + ": shear_displacement " +
-                                            fmt(d[k]) + " m does not increase on the previous row's " + fmt(d[k - 1]) +
-                                            " m (line " + std::to_string(lines[k - 1]) +
-                                            "): the displacement must increase strictly along the curve (sort the "
-                                            "rows; remove repeated rows and any unloading part)");
+  require_increasing(d, lines, kShearDisplacementColumn, csv, spec_file, key);
   c.max_displacement = d.back();
   c.shear_strength = curve_strength(d, tau, strength, c.window_points, c.peak_displacement);
   if (strength.peak) {

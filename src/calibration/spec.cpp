@@ -14,6 +14,7 @@
 #include "analysis/polyfit.hpp"
 #include "config/config_error.hpp"
 #include "io/format_number.hpp"
+#include "io/input_file.hpp"
 #include "io/load_label.hpp"
 
 namespace colza::calibration {
@@ -124,16 +125,30 @@ std::string resolve(const std::string& spec_file, const std::string& value) {
   return p.lexically_normal().string();
 }
 
+// "" when the model config loads with `key` = `value` added to the spec's overrides, else
+// why not ("the model does not accept particle.density = -1200: must be positive, ...").
+std::string model_rejects(const Spec& s, Scenario scenario, const std::string& key, double value) {
+  std::vector<std::string> set = s.model_set;
+  set.push_back(key + "=" + fmt(value));
+  try {
+    load_run_config(scenario, s.model_config, set);
+  } catch (const ConfigError& e) {
+    return "the model does not accept " + key + " = " + fmt(value) + ": " + e.reason();
+  }
+  return "";
+}
+
 }  // namespace
 
 Spec read_spec(const std::string& path) {
   Spec s;
   s.file = path;
+  if (const std::string why = unreadable_file_reason(path); !why.empty())
+    throw ConfigError(path, "", "the calibration spec " + why);
   toml::table doc;
   try {
     doc = toml::parse_file(path);
   } catch (const toml::parse_error& e) {
-    if (!fs::exists(path)) throw ConfigError(path, "", "cannot open the calibration spec");
     std::ostringstream m;
     m << "TOML syntax error: " << e.description() << " (line " << e.source().begin.line << ")";
     throw ConfigError(path, "", m.str());
@@ -189,16 +204,17 @@ Spec read_spec(const std::string& path) {
                            "]): a surface cannot be fitted");
     for (double v : d)
       if (v < par.lower || v > par.upper) n.fail("design", "design value " + fmt(v) + " is outside [lower, upper]");
-    // The parameter must be a number the model config accepts.
-    try {
-      load_run_config(scenario, s.model_config, [&] {
-        auto o = s.model_set;
-        o.push_back(par.key + "=" + fmt(d[0]));
-        return o;
-      }());
-    } catch (const ConfigError& e) {
-      n.fail("key", std::string("the model does not accept this parameter: ") + e.what());
-    }
+    // Every value a run can be given must be one the model config accepts: the design
+    // values and the bounds (the solver and the sequential refinement stay within them; the
+    // model's own limits are ranges, so the bounds stand for the values between them).
+    std::set<double> values(d.begin(), d.end());
+    values.insert(par.lower);
+    values.insert(par.upper);
+    for (double v : values)
+      if (const std::string why = model_rejects(s, scenario, par.key, v); !why.empty()) {
+        const bool in_design = std::find(d.begin(), d.end(), v) != d.end();
+        n.fail(in_design ? "design" : (v == par.lower ? "lower" : "upper"), why);
+      }
     if (!columns.empty() && d.size() != columns[0].size())
       n.fail("design", "has " + std::to_string(d.size()) + " values, parameters[0].design has " +
                            std::to_string(columns[0].size()) + ": every parameter needs one value per design point");
@@ -226,7 +242,7 @@ Spec read_spec(const std::string& path) {
   }
   fit.reject_unknown();
   const Node seq = root.child("sequential");
-  p.max_runs = static_cast<int>(seq.number("max_runs", 12.0));
+  p.max_runs = static_cast<int>(seq.integer("max_runs", 12, 1, 100000));
   if (p.max_runs < static_cast<int>(np) + 2)
     seq.fail("max_runs", "must allow the " + std::to_string(np + 1) + " start points and one refinement run (>= " +
                              std::to_string(np + 2) + ")");
@@ -241,6 +257,8 @@ Spec read_spec(const std::string& path) {
         auto v = (*r)[j].value<double>();
         if (!v) seq.fail("start", "points must be numbers");
         x[j] = *v;
+        if (const std::string why = model_rejects(s, scenario, p.parameters[j].key, x[j]); !why.empty())
+          seq.fail("start", "point " + std::to_string(p.sequential_start.size() + 1) + ": " + why);
       }
       p.sequential_start.push_back(x);
     }
@@ -275,7 +293,9 @@ Spec read_spec(const std::string& path) {
       if (!fs::exists(s.measured_file)) m.fail("curve", "the measured curve " + s.measured_file + " does not exist");
       const std::string dcol = m.string("displacement_column", "displacement");
       const std::string fcol = m.string("force_column", "force");
-      const auto cols = read_csv_columns(s.measured_file, {dcol, fcol}, path, "measured.curve");
+      std::vector<std::size_t> lines;
+      const auto cols = read_csv_columns(s.measured_file, {dcol, fcol}, path, "measured.curve", lines);
+      require_increasing(cols[0], lines, dcol, s.measured_file, path, "measured.curve");
       const double fmin = s.base.oedometer.fit_force_min, fmax = s.base.oedometer.fit_force_max;
       const double peak = cols[1].empty() ? 0.0 : *std::max_element(cols[1].begin(), cols[1].end());
       if (peak < fmax)

@@ -5,6 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <string>
+
+#include <unistd.h>
 
 #include "calibration/calibrate.hpp"
 #include "calibration/dem_model.hpp"
@@ -71,6 +74,49 @@ std::vector<std::string> warnings_about_runs(const DemModel& dem, const fs::path
   return w;
 }
 
+// Where the design runs live: --runs, or DIR/runs.
+fs::path runs_folder(const CalibrateOptions& opt) {
+  return opt.runs_dir.empty() ? fs::path(opt.out_dir) / "runs" : fs::absolute(opt.runs_dir);
+}
+
+// Makes --out and the runs folder (--runs, or DIR/runs) before any run starts, and checks that
+// both take files: a path that cannot be a writable folder is bad input (exit 2), said before
+// the first run, not as an internal error after it. A --out made here is removed again when
+// the runs folder then fails, so nothing is left behind.
+void make_output_folders(const fs::path& out, const fs::path& runs, bool runs_given) {
+  const auto refuse = [&](const std::string& option, const fs::path& dir, const std::string& why) {
+    throw ConfigError(option + " " + dir.string(), "", why);
+  };
+  const auto writable = [](const fs::path& dir) {
+    std::error_code ec;
+    const fs::path probe = dir / (".colza-write-test-" + std::to_string(::getpid()));
+    const bool ok = fs::create_directory(probe, ec) && !ec;
+    fs::remove(probe, ec);
+    return ok;
+  };
+  std::error_code ec;
+  if (runs_given && fs::exists(runs, ec) && !fs::is_directory(runs, ec))
+    refuse("--runs", runs, "exists and is not a directory");
+  const bool out_existed = fs::exists(out, ec);
+  fs::create_directories(out, ec);
+  if (ec) refuse("--out", out, "cannot create the directory: " + ec.message());
+  const auto undo_out = [&] {
+    std::error_code ignored;
+    if (!out_existed) fs::remove(out, ignored);  // only if still empty
+  };
+  if (!writable(out)) {
+    undo_out();
+    refuse("--out", out, "cannot write into the directory (permission denied?)");
+  }
+  fs::create_directories(runs, ec);
+  if (ec || !writable(runs)) {
+    const std::string why = ec ? "cannot create the directory: " + ec.message() : "cannot write into the directory";
+    fs::remove(runs, ec);  // only if empty: a runs folder made just now
+    undo_out();
+    refuse(runs_given ? "--runs" : "--out", runs_given ? runs : out, why);
+  }
+}
+
 }  // namespace
 
 int calibrate_command(const CalibrateOptions& opt) {
@@ -84,6 +130,7 @@ int calibrate_command(const CalibrateOptions& opt) {
                                                         "\", the command asked for \"" + opt.stage + "\"");
         validate_problem(spec.problem, opt.mode == "sequential");
         check_output_dir(opt.out_dir, opt.force, "runs");  // runs/: a stopped calibration, resumed
+        make_output_folders(opt.out_dir, runs_folder(opt), !opt.runs_dir.empty());
       }))
     return code;
   for (const auto& w : spec.warnings) std::fprintf(stderr, "colza: warning: %s\n", w.c_str());
@@ -97,8 +144,7 @@ int calibrate_command(const CalibrateOptions& opt) {
     std::fflush(stdout);
   }
   const fs::path out(opt.out_dir);
-  fs::create_directories(out);
-  const fs::path runs = opt.runs_dir.empty() ? out / "runs" : fs::absolute(opt.runs_dir);
+  const fs::path runs = runs_folder(opt);
   DemModel dem(spec, runs, verbose);
   const ForwardModel model = [&dem](const Eigen::VectorXd& x) { return dem(x); };
   LoopOptions loop;

@@ -244,6 +244,58 @@ TEST_F(CalibrateCompression, BadMeasuredDataAreClearErrors) {
   EXPECT_FALSE(fs::exists(dir_ / "e1" / "summary.json"));
 }
 
+TEST_F(CalibrateCompression, BadSpecValuesAndOutputFoldersAreRefusedBeforeAnyRun) {
+  const std::string spec = read_file(dir_ / "spec.toml");
+  const auto refused = [&](const std::string& name, const std::string& text, const std::string& args,
+                           const std::vector<std::string>& said) {
+    write_file(dir_ / (name + ".toml"), text);
+    const fs::path out = dir_ / ("out-" + name);
+    const CliResult r = run_colza("calibrate compression --quiet --spec " + (dir_ / (name + ".toml")).string() +
+                                  " --out " + out.string() + " " + args);
+    EXPECT_EQ(r.exit_code, 2) << name << ": " << r.stderr_text;
+    for (const std::string& s : said) EXPECT_NE(r.stderr_text.find(s), std::string::npos) << name << ": " << r.stderr_text;
+    EXPECT_FALSE(fs::exists(out)) << name << ": nothing may be left behind";
+  };
+  // A design value the model refuses, past the first one (each is checked, and the bounds).
+  std::string bad = spec;
+  bad.replace(bad.find("[0.3, 0.2, 0.3, 0.4, 0.3]"), 25, "[0.3, 0.2, -0.3, 0.4, 0.3]");
+  refused("negative-design", bad, "", {"parameters[1].design", "does not accept particle.friction = -0.3"});
+  bad = spec;
+  bad.replace(bad.find("design = [350e3"), 0, "lower = -1.0\n");
+  refused("negative-lower", bad, "", {"parameters[0].lower", "does not accept particle.normal_stiffness = -1"});
+  // A sequential start point the model refuses; a max_runs that is not a whole number.
+  bad = spec;
+  bad.replace(bad.find("max_runs = 10"), 13, "max_runs = 10\nstart = [[400e3, 0.3], [450e3, -0.3], [400e3, 0.4]]");
+  refused("negative-start", bad, "--mode sequential", {"sequential.start", "point 2", "particle.friction = -0.3"});
+  bad = spec;
+  bad.replace(bad.find("max_runs = 10"), 13, "max_runs = 10.5");
+  refused("fractional-max-runs", bad, "", {"sequential.max_runs", "whole number"});
+  // A measured curve whose displacement goes back (an unloading part).
+  std::string curve = read_file(dir_ / "measured.csv");
+  curve += "0.0001,5\n";
+  write_file(dir_ / "backwards.csv", curve);
+  bad = spec;
+  bad.replace(bad.find("measured.csv"), 12, "backwards.csv");
+  refused("backwards-curve", bad, "", {"measured.curve", "does not increase", "unloading"});
+  // A spec that is a folder.
+  const CliResult folder = run_colza("calibrate compression --quiet --spec " + dir_.string() + " --out " +
+                                     (dir_ / "out-folder").string());
+  EXPECT_EQ(folder.exit_code, 2);
+  EXPECT_NE(folder.stderr_text.find("is a directory, not a file"), std::string::npos) << folder.stderr_text;
+  // --out below a file, --runs naming a file: refused before any run, and no --out left.
+  write_file(dir_ / "a-file", "x");
+  CliResult r = run_colza("calibrate compression --quiet --spec " + (dir_ / "spec.toml").string() + " --out " +
+                          (dir_ / "a-file" / "sub").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("--out"), std::string::npos) << r.stderr_text;
+  r = run_colza("calibrate compression --quiet --spec " + (dir_ / "spec.toml").string() + " --out " +
+                (dir_ / "out-runs-file").string() + " --runs " + (dir_ / "a-file").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("--runs"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("not a directory"), std::string::npos) << r.stderr_text;
+  EXPECT_FALSE(fs::exists(dir_ / "out-runs-file"));
+}
+
 TEST(CalibrateDensity, BothModesRunTheLoopOnASmallSample) {
   // Truth rho_p = 1260 kg/m^3 on the small oedometer; bulk density target +/- 1 %. A check
   // of the loop, not of the recovery (the design's centre, 1250, would pass it; see the top
