@@ -43,11 +43,15 @@
 #include <stdexcept>
 #include <string>
 #include <toml++/toml.h>
+
+#include <unistd.h>
+
 #include "checks.hpp"
 #include "code_runs.hpp"
 #include "options.hpp"
 #include "report.hpp"
 #include "speed_tally.hpp"
+#include "tolerances.hpp"
 
 using namespace crosscheck;
 
@@ -120,6 +124,9 @@ int main(int argc, char** argv) {
   opt.source = fs::absolute(opt.source);
   opt.workdir = fs::absolute(opt.workdir);
 
+  // A path to YADE that does not exist is a mistake, not a machine without YADE.
+  if (opt.yade.find('/') != std::string::npos && !fs::exists(opt.yade))
+    return usage(("--yade " + opt.yade + ": no such file").c_str());
   if (!yade_available(opt.yade)) {
     std::printf("crosscheck: SKIPPED: YADE is not installed ('%s' is not on PATH); install the Debian package yade\n",
                 opt.yade.c_str());
@@ -127,12 +134,23 @@ int main(int argc, char** argv) {
   }
   toml::table tol;
   try {
-    tol = toml::parse_file(opt.tolerances.string());
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "crosscheck: cannot read %s: %s\n", opt.tolerances.string().c_str(), e.what());
+    tol = read_tolerances(opt.tolerances, opt.what, opt.size);
+  } catch (const ToleranceError& e) {
+    std::fprintf(stderr, "crosscheck: error: %s\n", e.what());
     return kExitUsage;
   }
-  fs::create_directories(opt.workdir);
+  std::error_code made;
+  fs::create_directories(opt.workdir, made);
+  const fs::path probe = opt.workdir / (".crosscheck-write-test-" + std::to_string(::getpid()));
+  std::error_code wrote;
+  if (!made && fs::is_directory(opt.workdir)) fs::create_directory(probe, wrote), fs::remove(probe, made);
+  if (made || wrote || !fs::is_directory(opt.workdir)) {
+    const std::string why = made    ? "cannot create the directory: " + made.message()
+                            : wrote ? "cannot write into the directory: " + wrote.message()
+                                    : std::string("exists and is not a directory");
+    std::fprintf(stderr, "crosscheck: error: --workdir %s: %s\n", opt.workdir.string().c_str(), why.c_str());
+    return kExitUsage;
+  }
   std::printf("crosscheck %s (--size %s): colza %s, YADE '%s', work in %s\n", opt.what.c_str(), opt.size.c_str(),
               opt.colza.string().c_str(), opt.yade.c_str(), opt.workdir.string().c_str());
   std::fflush(stdout);

@@ -1,0 +1,174 @@
+#include "tolerances.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <vector>
+
+namespace crosscheck {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+enum class Kind { kNonNegative, kPositive, kCount, kProbability, kString, kPositiveList };
+
+struct Checker {
+  std::string file;
+
+  [[noreturn]] void fail(const std::string& key, const std::string& why) const {
+    throw ToleranceError(file + ": key '" + key + "': " + why);
+  }
+
+  void value(const std::string& key, const toml::node& n, Kind kind) const {
+    if (kind == Kind::kString) {
+      if (!n.is_string()) fail(key, "must be a string (a path in the source tree)");
+      return;
+    }
+    if (kind == Kind::kPositiveList) {
+      const toml::array* a = n.as_array();
+      if (!a || a->empty()) fail(key, "must be a list of numbers > 0");
+      for (const auto& item : *a) {
+        const auto v = item.value<double>();
+        if (!v || !(*v > 0.0) || !std::isfinite(*v)) fail(key, "must be a list of numbers > 0");
+      }
+      return;
+    }
+    if (kind == Kind::kCount) {
+      const auto v = n.value_exact<std::int64_t>();
+      if (!v || *v < 1) fail(key, "must be a whole number >= 1");
+      return;
+    }
+    const auto v = n.value<double>();
+    if (!v || !std::isfinite(*v)) fail(key, "must be a number");
+    if (kind == Kind::kNonNegative && *v < 0.0) fail(key, "must be >= 0");
+    if (kind == Kind::kPositive && !(*v > 0.0)) fail(key, "must be > 0");
+    if (kind == Kind::kProbability && !(*v > 0.0 && *v < 1.0)) fail(key, "must be between 0 and 1");
+  }
+
+  // Every key of `t` must be in `schema`; the `required` ones must be there.
+  void table(const std::string& base, const toml::table& t, const std::map<std::string, Kind>& schema,
+             const std::set<std::string>& required = {}) const {
+    for (const auto& [k, n] : t) {
+      const std::string key = base + "." + std::string(k.str());
+      const auto it = schema.find(std::string(k.str()));
+      if (it == schema.end()) fail(key, "unknown key (misspelt?)");
+      value(key, n, it->second);
+    }
+    for (const std::string& r : required)
+      if (!t.contains(r)) fail(base + "." + r, "missing");
+  }
+
+  const toml::table& section(const toml::table& doc, const std::string& path, bool required) const {
+    static const toml::table kEmpty;
+    const toml::node_view<const toml::node> n = doc.at_path(path);
+    if (!n) {
+      if (required) fail(path, "missing: the [" + path + "] section is needed by this command");
+      return kEmpty;
+    }
+    if (!n.is_table()) fail(path, "must be a table ([" + path + "])");
+    return *n.as_table();
+  }
+};
+
+const std::map<std::string, Kind>& ensemble_keys() {
+  static const std::map<std::string, Kind> keys = {{"ensemble_realisations", Kind::kCount},
+                                                   {"ensemble_perturbation", Kind::kNonNegative},
+                                                   {"ensemble_alpha", Kind::kProbability}};
+  return keys;
+}
+
+std::map<std::string, Kind> with_ensemble(std::map<std::string, Kind> keys) {
+  keys.insert(ensemble_keys().begin(), ensemble_keys().end());
+  return keys;
+}
+
+}  // namespace
+
+toml::table read_tolerances(const fs::path& file, const std::string& command, const std::string& size) {
+  const Checker c{file.string()};
+  std::error_code ec;
+  if (!fs::exists(file, ec)) throw ToleranceError(file.string() + ": does not exist");
+  if (fs::is_directory(file, ec)) throw ToleranceError(file.string() + ": is a directory, not a tolerances file");
+  if (!std::ifstream(file)) throw ToleranceError(file.string() + ": cannot be read");
+  toml::table doc;
+  try {
+    doc = toml::parse_file(file.string());
+  } catch (const toml::parse_error& e) {
+    throw ToleranceError(file.string() + ": TOML syntax error (line " + std::to_string(e.source().begin.line) +
+                         "): " + std::string(e.description()));
+  }
+  for (const auto& [k, n] : doc) {
+    const std::string key(k.str());
+    if (key != "micro" && key != "oedometer" && key != "shear") c.fail(key, "unknown section (micro, oedometer, shear)");
+    if (!n.is_table()) c.fail(key, "must be a table");
+  }
+  const bool all = command == "all";
+  const auto sizes_of = [&](const std::string& setup) {
+    for (const auto& [k, n] : c.section(doc, setup, false)) {
+      const std::string s(k.str());
+      if (s != "small" && s != "full") c.fail(setup + "." + s, "unknown size (small, full)");
+      if (!n.is_table()) c.fail(setup + "." + s, "must be a table");
+    }
+  };
+  sizes_of("oedometer");
+  sizes_of("shear");
+
+  // [micro]
+  const toml::table& micro = c.section(doc, "micro", command == "micro" || all);
+  for (const auto& [k, n] : micro) {
+    const std::string key = "micro." + std::string(k.str());
+    if (k.str() == "relative" || k.str() == "contacts") c.value(key, n, Kind::kNonNegative);
+    else if (k.str() == "floor") {
+      if (!n.is_table()) c.fail(key, "must be a table");
+      c.table(key, *n.as_table(),
+              {{"position", Kind::kNonNegative}, {"velocity", Kind::kNonNegative},
+               {"angular_velocity", Kind::kNonNegative}, {"force", Kind::kNonNegative},
+               {"torque", Kind::kNonNegative}});
+    } else if (k.str() == "scenes") {
+      if (!n.is_table()) c.fail(key, "must be a table");
+      for (const auto& [scene, v] : *n.as_table()) c.value(key + "." + std::string(scene.str()), v, Kind::kNonNegative);
+    } else {
+      c.fail(key, "unknown key (misspelt?)");
+    }
+  }
+  if (command == "micro" || all) {
+    const toml::table& scenes = c.section(doc, "micro.scenes", true);
+    if (scenes.empty()) c.fail("micro.scenes", "names no scene");
+  }
+
+  // [oedometer.SIZE], [shear.SIZE]
+  const std::map<std::string, Kind> oedometer = with_ensemble({{"config", Kind::kString},
+                                                               {"settle_config", Kind::kString},
+                                                               {"early_rows", Kind::kCount},
+                                                               {"early_relative", Kind::kNonNegative},
+                                                               {"rms_relative", Kind::kNonNegative},
+                                                               {"force_at_relative", Kind::kNonNegative},
+                                                               {"travels", Kind::kPositiveList}});
+  const std::map<std::string, Kind> shear = with_ensemble({{"config", Kind::kString},
+                                                           {"loads", Kind::kPositiveList},
+                                                           {"shear_displacement", Kind::kPositive},
+                                                           {"strength_window_start", Kind::kPositive},
+                                                           {"strength_window_end", Kind::kPositive},
+                                                           {"early_steps", Kind::kNonNegative},
+                                                           {"early_relative", Kind::kNonNegative},
+                                                           {"strength_relative", Kind::kNonNegative},
+                                                           {"curve_rms_relative", Kind::kNonNegative},
+                                                           {"normal_stress_relative", Kind::kNonNegative},
+                                                           {"cohesion_absolute_kpa", Kind::kNonNegative},
+                                                           {"friction_angle_absolute_deg", Kind::kNonNegative}});
+  for (const std::string s : {"small", "full"}) {
+    // `all` runs the small setups, and the full ones too with --size full.
+    const bool wanted_oedometer = (command == "oedometer" && size == s) || (all && (s == "small" || size == "full"));
+    const bool wanted_shear = (command == "shear" && size == s) || (all && (s == "small" || size == "full"));
+    const std::string o = "oedometer." + s, h = "shear." + s;
+    c.table(o, c.section(doc, o, wanted_oedometer), oedometer, wanted_oedometer ? std::set<std::string>{"config"}
+                                                                                 : std::set<std::string>{});
+    c.table(h, c.section(doc, h, wanted_shear), shear, wanted_shear ? std::set<std::string>{"config"}
+                                                                    : std::set<std::string>{});
+  }
+  return doc;
+}
+
+}  // namespace crosscheck

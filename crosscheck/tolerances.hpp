@@ -1,0 +1,35 @@
+// The tolerances file (data/crosscheck-tolerances.toml) read and checked before anything
+// runs: a misspelt key, a value of the wrong type or out of range, or a section the command
+// needs that is missing would otherwise fall back to a built-in value or fail after YADE had
+// run for minutes. The checks then read it with tol_number and at_path, as before.
+#pragma once
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <toml++/toml.h>
+
+namespace crosscheck {
+
+// Bad tolerances: what() names the file, the key and the reason.
+class ToleranceError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Parses `file` and checks every key against the schema below; `command` (micro, oedometer,
+// shear, all) and `size` (small, full) say which sections must be there. Throws
+// ToleranceError.
+//   [micro]            relative, contacts (numbers >= 0); [micro.floor] position, velocity,
+//                      angular_velocity, force, torque (>= 0); [micro.scenes] name = relative
+//                      tolerance (>= 0), at least one
+//   [oedometer.SIZE]   config (required), settle_config (strings); early_rows (integer >= 1);
+//                      early_relative, rms_relative, force_at_relative (>= 0); travels
+//                      (numbers > 0); ensemble keys
+//   [shear.SIZE]       config (required); loads (numbers > 0); shear_displacement,
+//                      strength_window_start, strength_window_end (> 0); early_steps, and the
+//                      relative and absolute tolerances (>= 0); ensemble keys
+//   ensemble keys      ensemble_realisations (integer >= 1), ensemble_perturbation (>= 0),
+//                      ensemble_alpha (in (0, 1))
+toml::table read_tolerances(const std::filesystem::path& file, const std::string& command, const std::string& size);
+
+}  // namespace crosscheck

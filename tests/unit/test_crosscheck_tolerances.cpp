@@ -1,0 +1,76 @@
+// The cross-check's tolerances file is checked before anything runs
+// (crosscheck/tolerances.hpp): the shipped file passes for every command; a misspelt key, a
+// value of the wrong type or range, or a section the command needs that is missing is a
+// ToleranceError naming the key.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "crosscheck/tolerances.hpp"
+#include "scratch_dir.hpp"
+
+namespace {
+
+using crosscheck::read_tolerances;
+using crosscheck::ToleranceError;
+
+const std::string kShipped = std::string(COLZA_SOURCE_DIR) + "/data/crosscheck-tolerances.toml";
+
+std::string shipped_text() {
+  std::ifstream in(kShipped);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The message of the ToleranceError that reading `text` for `command` raises ("" if none).
+std::string error_of(const colza::testing::ScratchDir& dir, const std::string& text, const std::string& command,
+                     const std::string& size = "small") {
+  const std::string file = dir.write("tol.toml", text);
+  try {
+    read_tolerances(file, command, size);
+  } catch (const ToleranceError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+TEST(CrosscheckTolerances, TheShippedFilePassesForEveryCommand) {
+  for (const char* command : {"micro", "oedometer", "shear", "all"})
+    for (const char* size : {"small", "full"}) EXPECT_NO_THROW(read_tolerances(kShipped, command, size));
+}
+
+TEST(CrosscheckTolerances, MisspeltKeysWrongTypesAndRangesAreNamed) {
+  const colza::testing::ScratchDir dir;
+  const std::string text = shipped_text();
+  std::string e = error_of(dir, replaced(text, "rms_relative = 0.15", "rms_relativ = 0.15"), "oedometer");
+  EXPECT_NE(e.find("key 'oedometer.small.rms_relativ': unknown key"), std::string::npos) << e;
+  e = error_of(dir, replaced(text, "ensemble_realisations = 12", "ensemble_realisations = 12.5"), "shear");
+  EXPECT_NE(e.find("key 'shear.small.ensemble_realisations': must be a whole number"), std::string::npos) << e;
+  e = error_of(dir, replaced(text, "ensemble_alpha = 0.01", "ensemble_alpha = 1.5"), "oedometer");
+  EXPECT_NE(e.find("key 'oedometer.small.ensemble_alpha': must be between 0 and 1"), std::string::npos) << e;
+  e = error_of(dir, replaced(text, "force = 1e-12", "force = \"tiny\""), "micro");
+  EXPECT_NE(e.find("key 'micro.floor.force': must be a number"), std::string::npos) << e;
+  e = error_of(dir, replaced(text, "[shear.full]", "[shear.ful]"), "micro");
+  EXPECT_NE(e.find("key 'shear.ful': unknown size"), std::string::npos) << e;
+  e = error_of(dir, replaced(text, "loads = [25.75e3, 78.75e3]", "loads = [25.75e3, -1.0]"), "shear");
+  EXPECT_NE(e.find("key 'shear.small.loads': must be a list of numbers > 0"), std::string::npos) << e;
+}
+
+TEST(CrosscheckTolerances, ASectionTheCommandNeedsMustBeThere) {
+  const colza::testing::ScratchDir dir;
+  const std::string no_full_shear = shipped_text().substr(0, shipped_text().find("[shear.full]"));
+  EXPECT_EQ(error_of(dir, no_full_shear, "shear", "small"), "");
+  const std::string e = error_of(dir, no_full_shear, "all", "full");
+  EXPECT_NE(e.find("key 'shear.full': missing"), std::string::npos) << e;
+  const std::string folder = (dir / "folder").string();
+  std::filesystem::create_directory(folder);
+  EXPECT_THROW(read_tolerances(folder, "micro", "small"), ToleranceError);
+}
+
+}  // namespace
