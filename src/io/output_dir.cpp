@@ -46,13 +46,24 @@ void sync_to_disk(const fs::path& path) {
   ::close(fd);
 }
 
+// The files a run writes into --out (a series also writes load-<N>Pa folders).
+constexpr const char* kRunFiles[] = {"summary.json", "sample.json", "packing.txt", "curve.csv", "series.csv",
+                                     "result.h5"};
+
 }  // namespace
 
 void check_output_dir(const fs::path& dir, bool overwrite, const std::string& unfinished_marker) {
   const std::string name = "--out " + dir.string();
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) throw ConfigError(name, "", "exists and is not a directory");
-  if (overwrite || !fs::is_directory(dir, ec)) return;
+  if (!fs::is_directory(dir, ec)) return;
+  // --force replaces files of the same name, but a folder cannot be renamed over: said now,
+  // not after the run.
+  for (const char* f : kRunFiles)
+    if (fs::is_directory(dir / f, ec))
+      throw ConfigError(name, "", std::string("holds a folder named ") + f +
+                                      ", the name of a file colza writes there: move it away or choose another --out");
+  if (overwrite) return;
   if (fs::exists(dir / "summary.json", ec))
     throw ConfigError(name, "", "already holds a result (summary.json); pass --force to replace it");
   if (!unfinished_marker.empty() && fs::exists(dir / unfinished_marker, ec)) return;  // resumed
@@ -70,8 +81,6 @@ std::vector<std::string> earlier_run_outputs(const fs::path& dir) {
   if (!written_by_colza(dir / "summary.json", {"colza_version"}) &&
       !written_by_colza(dir / "sample.json", {"config_fingerprint"}))
     return names;
-  static const char* const kRunFiles[] = {"summary.json", "sample.json", "packing.txt", "curve.csv", "series.csv",
-                                          "result.h5"};
   for (const char* f : kRunFiles)
     if (fs::exists(dir / f, ec)) names.push_back(f);
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {

@@ -158,6 +158,19 @@ TEST(CliErrors, ForceReplacesOnlyColzasOwnFiles) {
   EXPECT_EQ(read_file(out / "load-cases" / "summary.json"), "{\"colza_version\": \"mine\"}\n");
 }
 
+TEST(CliErrors, AFolderNamedLikeAResultFileIsRefusedBeforeTheRun) {
+  // --force replaces files of the same name, but a folder cannot be renamed over: refused
+  // before the run (it was refused only at the end, after the whole run), and left as it is.
+  const fs::path out = scratch_dir("folder-named-curve");
+  fs::create_directories(out / "curve.csv");
+  write_file(out / "curve.csv" / "mine.txt", "keep\n");
+  const CliResult r = run_colza("run oedometer --quiet --force --config " + kConfig + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("holds a folder named curve.csv"), std::string::npos) << r.stderr_text;
+  EXPECT_EQ(read_file(out / "curve.csv" / "mine.txt"), "keep\n");
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+}
+
 TEST(CliErrors, EmptyPackingFileIsRefusedBeforeTheRun) {
   const fs::path dir = scratch_dir("empty-packing");
   fs::create_directories(dir);
