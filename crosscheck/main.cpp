@@ -32,7 +32,9 @@
 //
 // Prints a table (metric, colza, YADE, difference, tolerance, PASS/FAIL) and both codes'
 // speed. Exit code: 0 all passed, 1 something failed (a run that fails is a FAIL row), 2 bad
-// usage or an unreadable tolerance file, 77 YADE is not installed (CTest SKIP_RETURN_CODE).
+// usage, a tolerances file that cannot be read or has a key of a wrong name, type or range
+// (tolerances.hpp), or a --workdir that cannot be made or written; 77 YADE is not installed
+// (CTest SKIP_RETURN_CODE).
 //
 // This file reads the command line and runs the checks; the comparisons are in
 // micro_check.cpp, oedometer_check.cpp and shear_check.cpp (checks.hpp), the runs of both

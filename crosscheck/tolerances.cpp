@@ -89,8 +89,10 @@ std::map<std::string, Kind> with_ensemble(std::map<std::string, Kind> keys) {
 toml::table read_tolerances(const fs::path& file, const std::string& command, const std::string& size) {
   const Checker c{file.string()};
   std::error_code ec;
-  if (!fs::exists(file, ec)) throw ToleranceError(file.string() + ": does not exist");
-  if (fs::is_directory(file, ec)) throw ToleranceError(file.string() + ": is a directory, not a tolerances file");
+  const fs::file_status status = fs::status(file, ec);
+  if (status.type() == fs::file_type::not_found) throw ToleranceError(file.string() + ": does not exist");
+  if (ec) throw ToleranceError(file.string() + ": cannot be read: " + ec.message());
+  if (fs::is_directory(status)) throw ToleranceError(file.string() + ": is a directory, not a tolerances file");
   if (!std::ifstream(file)) throw ToleranceError(file.string() + ": cannot be read");
   toml::table doc;
   try {
@@ -149,7 +151,7 @@ toml::table read_tolerances(const fs::path& file, const std::string& command, co
   const std::map<std::string, Kind> shear = with_ensemble({{"config", Kind::kString},
                                                            {"loads", Kind::kPositiveList},
                                                            {"shear_displacement", Kind::kPositive},
-                                                           {"strength_window_start", Kind::kPositive},
+                                                           {"strength_window_start", Kind::kNonNegative},
                                                            {"strength_window_end", Kind::kPositive},
                                                            {"early_steps", Kind::kNonNegative},
                                                            {"early_relative", Kind::kNonNegative},

@@ -26,7 +26,7 @@ class ToleranceError : public std::runtime_error {
 //                      early_relative, rms_relative, force_at_relative (>= 0); travels
 //                      (numbers > 0); ensemble keys
 //   [shear.SIZE]       config (required); loads (numbers > 0); shear_displacement,
-//                      strength_window_start, strength_window_end (> 0); early_steps, and the
+//                      strength_window_end (> 0), strength_window_start (>= 0); early_steps, and the
 //                      relative and absolute tolerances (>= 0); ensemble keys
 //   ensemble keys      ensemble_realisations (integer >= 1), ensemble_perturbation (>= 0),
 //                      ensemble_alpha (in (0, 1))

@@ -1,8 +1,9 @@
 # colza's packing file format, read without YADE: shared by the YADE scripts (through
 # colza_yade.py) and tests/bench/compare_codes.py, which runs outside YADE.
 #
-# Format (src/io/packing_file.cpp): one sphere per line, "x y z r" in m (further columns
-# ignored); blank lines and lines starting with '#' are skipped.
+# Format (src/io/packing_file.cpp): one sphere per line, exactly four numbers "x y z r" in m;
+# blank lines and lines starting with '#' are skipped. A line that is not four numbers is an
+# error here too, as in colza.
 
 
 def read_packing(path):
@@ -13,6 +14,9 @@ def read_packing(path):
             s = line.strip()
             if not s or s.startswith("#"):
                 continue
-            x, y, z, r = (float(v) for v in s.split()[:4])
+            fields = s.split()
+            if len(fields) != 4:
+                raise ValueError(f"{path}: expected four numbers 'x y z r' (m), got {line.rstrip()!r}")
+            x, y, z, r = (float(v) for v in fields)
             spheres.append((x, y, z, r))
     return spheres

@@ -133,7 +133,9 @@ std::string model_rejects(const Spec& s, Scenario scenario, const std::string& k
   try {
     load_run_config(scenario, s.model_config, set);
   } catch (const ConfigError& e) {
-    return "the model does not accept " + key + " = " + fmt(value) + ": " + e.reason();
+    // The key that objected, when another than the parameter's (a limit between two keys).
+    const std::string other = e.key().empty() || e.key() == key ? "" : "key '" + e.key() + "': ";
+    return "the model does not accept " + key + " = " + fmt(value) + ": " + other + e.reason();
   }
   return "";
 }
@@ -207,14 +209,23 @@ Spec read_spec(const std::string& path) {
     // Every value a run can be given must be one the model config accepts: the design
     // values and the bounds (the solver and the sequential refinement stay within them; the
     // model's own limits are ranges, so the bounds stand for the values between them).
+    // A key the model refuses at every value (misspelt, or not a number) is the key's fault.
     std::set<double> values(d.begin(), d.end());
     values.insert(par.lower);
     values.insert(par.upper);
+    std::string first_reason, first_key;
+    std::size_t refused = 0;
     for (double v : values)
       if (const std::string why = model_rejects(s, scenario, par.key, v); !why.empty()) {
-        const bool in_design = std::find(d.begin(), d.end(), v) != d.end();
-        n.fail(in_design ? "design" : (v == par.lower ? "lower" : "upper"), why);
+        ++refused;
+        if (first_reason.empty()) {
+          first_reason = why;
+          const bool in_design = std::find(d.begin(), d.end(), v) != d.end();
+          first_key = in_design ? "design" : (v == par.lower ? "lower" : "upper");
+        }
       }
+    if (refused == values.size()) n.fail("key", first_reason);
+    if (refused > 0) n.fail(first_key, first_reason);
     if (!columns.empty() && d.size() != columns[0].size())
       n.fail("design", "has " + std::to_string(d.size()) + " values, parameters[0].design has " +
                            std::to_string(columns[0].size()) + ": every parameter needs one value per design point");

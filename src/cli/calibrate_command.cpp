@@ -95,9 +95,11 @@ void make_output_folders(const fs::path& out, const fs::path& runs, bool runs_gi
     return ok;
   };
   std::error_code ec;
-  if (runs_given && fs::exists(runs, ec) && !fs::is_directory(runs, ec))
-    refuse("--runs", runs, "exists and is not a directory");
+  if (fs::exists(runs, ec) && !fs::is_directory(runs, ec))
+    refuse(runs_given ? "--runs" : "--out", runs_given ? runs : out,
+           runs_given ? "exists and is not a directory" : "holds a file named runs where the design runs go");
   const bool out_existed = fs::exists(out, ec);
+  const bool runs_existed = fs::exists(runs, ec);
   fs::create_directories(out, ec);
   if (ec) refuse("--out", out, "cannot create the directory: " + ec.message());
   const auto undo_out = [&] {
@@ -111,9 +113,10 @@ void make_output_folders(const fs::path& out, const fs::path& runs, bool runs_gi
   fs::create_directories(runs, ec);
   if (ec || !writable(runs)) {
     const std::string why = ec ? "cannot create the directory: " + ec.message() : "cannot write into the directory";
-    fs::remove(runs, ec);  // only if empty: a runs folder made just now
+    std::error_code ignored;
+    if (!runs_existed && fs::is_directory(runs, ignored)) fs::remove(runs, ignored);  // made just now, empty
     undo_out();
-    refuse(runs_given ? "--runs" : "--out", runs_given ? runs : out, why);
+    refuse(runs_given ? "--runs" : "--out", runs, why);
   }
 }
 

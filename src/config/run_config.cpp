@@ -181,9 +181,11 @@ std::string checked_packing_file(const ConfigReader& reader, const std::string& 
 }
 
 // Two spheres of a scene at one centre have no contact normal (the law divides by their
-// distance): refused, naming both (in the scene's order: [[particles]], then the packing
-// file's spheres, the last `from_packing` of them). Sorted by position, O(n log n).
-void refuse_shared_centres(const ConfigNode& t, const std::vector<SceneParticle>& particles, std::size_t from_packing) {
+// distance): refused, naming both: [[particles]] entries by index, the packing file's spheres
+// (the last packing_lines.size() particles) by their line in `packing_path`. Sorted by
+// position, O(n log n).
+void refuse_shared_centres(const ConfigNode& t, const std::vector<SceneParticle>& particles,
+                           const std::vector<int>& packing_lines, const std::string& packing_path) {
   std::vector<std::size_t> order(particles.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   const auto key = [&](std::size_t i) {
@@ -194,10 +196,11 @@ void refuse_shared_centres(const ConfigNode& t, const std::vector<SceneParticle>
   for (std::size_t k = 1; k < order.size(); ++k) {
     const std::size_t i = order[k - 1], j = order[k];
     if (particles[i].position != particles[j].position) continue;
-    const std::size_t first_from_packing = particles.size() - from_packing;
+    const std::size_t first_from_packing = particles.size() - packing_lines.size();
     const auto name = [&](std::size_t n) {
       return n < first_from_packing ? "particles[" + std::to_string(n) + "]"
-                                    : "sphere " + std::to_string(n - first_from_packing + 1) + " of packing_file";
+                                    : "line " + std::to_string(packing_lines[n - first_from_packing]) + " of " +
+                                          packing_path;
     };
     t.fail(j < first_from_packing ? "particles" : "packing_file",
            name(i) + " and " + name(j) + " have the same centre: their contact has no normal");
@@ -222,17 +225,20 @@ SceneSpec read_scene(const ConfigNode& t, const ConfigReader& reader) {
     sp.fixed = p.boolean("fixed", false);
     s.particles.push_back(sp);
   }
-  const std::size_t explicit_particles = s.particles.size();
+  std::vector<int> packing_lines;  // of the spheres read from the packing file
+  std::string packing_path;
   if (!s.packing_file.empty()) {
     const std::string key = t.path() + ".packing_file";
-    for (const PackedSphere& ps : read_packing(resolve_input_path(reader, key, s.packing_file), key)) {
+    packing_path = resolve_input_path(reader, key, s.packing_file);
+    for (const PackedSphere& ps : read_packing(packing_path, key)) {
+      packing_lines.push_back(ps.line);
       SceneParticle sp;
       sp.position = ps.position;
       sp.radius = ps.radius;
       s.particles.push_back(sp);
     }
   }
-  refuse_shared_centres(t, s.particles, s.particles.size() - explicit_particles);
+  refuse_shared_centres(t, s.particles, packing_lines, packing_path);
   for (const ConfigNode& w : t.table_array("walls")) s.walls.push_back(read_scene_wall(w));
   for (std::int64_t i : s.record_particles)
     if (i < 0 || i >= static_cast<std::int64_t>(s.particles.size()))

@@ -7,9 +7,10 @@
 
 namespace colza {
 
-// "" when this process can open `path` for reading and it is not a directory (a pipe such as
-// <(...) is fine); otherwise the reason: "does not exist", "is a directory, not a file" or
-// "cannot be read: <system message>" (e.g. Permission denied).
+// "" when `path` is a regular file or a pipe (such as <(...)) this process can open for
+// reading; otherwise the reason: "does not exist", "is a directory, not a file", "is not a
+// regular file" (a device such as /dev/zero would be read forever) or "cannot be read:
+// <system message>" (e.g. Permission denied).
 std::string unreadable_file_reason(const std::string& path);
 
 }  // namespace colza

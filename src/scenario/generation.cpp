@@ -46,14 +46,16 @@ std::vector<PackedSphere> generate_spheres(const GenerationRequest& req) {
 
   // No packing of spheres of diameter >= d_min fills more than pi / sqrt(18) (~74 %, Kepler)
   // of the region, so no more than `most` can ever be placed: a larger count is placed up to
-  // the first failures and reported by the caller, never allocated.
+  // the first failures and reported by the caller, never allocated (nor more than 2^20 in
+  // advance, for a tiny d_min).
   const double region_volume = req.region.shape == GenerationRegion::Shape::kBox
                                    ? span.x() * span.y() * span.z()
                                    : kPi * req.region.radius * req.region.radius * span.z();
   const double smallest_sphere = kPi / 6.0 * std::pow(std::max(req.diameter_min, 1e-12), 3);
   const double most = kPi / std::sqrt(18.0) * region_volume / smallest_sphere + 1.0;
   std::vector<PackedSphere> placed;
-  placed.reserve(static_cast<std::size_t>(std::min(static_cast<double>(req.count), most)));
+  constexpr double kReserveAtMost = 1 << 20;  // beyond it the vector grows as spheres are placed
+  placed.reserve(static_cast<std::size_t>(std::min({static_cast<double>(req.count), most, kReserveAtMost})));
   std::uint64_t failures = 0;
   while (placed.size() < req.count && failures < req.max_attempts) {
     const double d = req.diameter_min + (req.diameter_max - req.diameter_min) * unit(engine);

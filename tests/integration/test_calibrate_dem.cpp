@@ -261,6 +261,9 @@ TEST_F(CalibrateCompression, BadSpecValuesAndOutputFoldersAreRefusedBeforeAnyRun
   bad.replace(bad.find("[0.3, 0.2, 0.3, 0.4, 0.3]"), 25, "[0.3, 0.2, -0.3, 0.4, 0.3]");
   refused("negative-design", bad, "", {"parameters[1].design", "does not accept particle.friction = -0.3"});
   bad = spec;
+  bad.replace(bad.find("particle.friction"), 17, "particle.frictoin");
+  refused("misspelt-key", bad, "", {"parameters[1].key", "particle.frictoin", "unknown key"});
+  bad = spec;
   bad.replace(bad.find("design = [350e3"), 0, "lower = -1.0\n");
   refused("negative-lower", bad, "", {"parameters[0].lower", "does not accept particle.normal_stiffness = -1"});
   // A sequential start point the model refuses; a max_runs that is not a whole number.
@@ -294,6 +297,14 @@ TEST_F(CalibrateCompression, BadSpecValuesAndOutputFoldersAreRefusedBeforeAnyRun
   EXPECT_NE(r.stderr_text.find("--runs"), std::string::npos) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("not a directory"), std::string::npos) << r.stderr_text;
   EXPECT_FALSE(fs::exists(dir_ / "out-runs-file"));
+  // A file named runs in --out (where the design runs go) is refused and kept.
+  fs::create_directories(dir_ / "out-runs-named");
+  write_file(dir_ / "out-runs-named" / "runs", "mine\n");
+  r = run_colza("calibrate compression --quiet --spec " + (dir_ / "spec.toml").string() + " --out " +
+                (dir_ / "out-runs-named").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("holds a file named runs"), std::string::npos) << r.stderr_text;
+  EXPECT_EQ(read_file(dir_ / "out-runs-named" / "runs"), "mine\n");
 }
 
 TEST(CalibrateDensity, BothModesRunTheLoopOnASmallSample) {

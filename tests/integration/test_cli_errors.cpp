@@ -109,6 +109,10 @@ TEST(CliErrors, OptionsAScenarioWouldIgnoreAndOutOfRangeValuesAreErrors) {
   r = run_colza("run oedometer --quiet --config " + source_path("data") + " --out " + out.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.stderr_text.find("is a directory, not a file"), std::string::npos) << r.stderr_text;
+  // A device that would be read forever.
+  r = run_colza("run oedometer --quiet --config /dev/zero --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("is not a regular file"), std::string::npos) << r.stderr_text;
   for (const char* bad : {"--threads 0", "--seed -3", "--threads 1.5"}) {
     r = run_colza(std::string("run oedometer --quiet ") + bad + " --out " + out.string());
     EXPECT_EQ(r.exit_code, 2) << bad;

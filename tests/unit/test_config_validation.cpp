@@ -131,7 +131,8 @@ TEST(ConfigValidation, SceneSpheresAtOneCentreAndMissingRadiusAreRefused) {
   dir.write("p.txt", "0 0 0.01 0.003\n0 0 0.02 0.003\n");
   ConfigError e = expect_config_error([&] { load_run_config(Scenario::kScene, twice, {}); });
   EXPECT_EQ(e.key(), "scene.packing_file");
-  EXPECT_NE(e.reason().find("particles[0] and sphere 2 of packing_file have the same centre"), std::string::npos)
+  EXPECT_NE(e.reason().find("particles[0] and line 2 of " + (dir / "p.txt").string() + " have the same centre"),
+            std::string::npos)
       << e.what();
   const std::string no_radius = dir.write("no_radius.toml", head + "[[scene.particles]]\nposition = [0.0, 0.0, 0.02]\n");
   e = expect_config_error([&] { load_run_config(Scenario::kScene, no_radius, {}); });

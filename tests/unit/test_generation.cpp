@@ -134,12 +134,12 @@ TEST(Generation, StopsWhenAttemptsAreExhausted) {
 }
 
 TEST(Generation, AnImpossibleCountIsNotAllocated) {
-  // 1e11 spheres (1.6 TB of records) in the same 10 mm cube: the generator reserves no more
-  // than could ever fit (the Kepler bound, ~7 of d = 6 mm here), so it returns what fits
-  // instead of failing to allocate.
+  // 1e18 spheres in the same 10 mm cube, more than a vector can hold (reserving them throws
+  // std::length_error): the generator reserves no more than could ever fit (the Kepler
+  // bound, ~7 of d = 6 mm here), so it returns what fits.
   GenerationRequest req;
   req.region = GenerationRegion::box(Vec3::Zero(), Vec3(0.01, 0.01, 0.01));
-  req.count = 100000000000ULL;
+  req.count = 1000000000000000000ULL;
   req.diameter_min = 6e-3;
   req.diameter_max = 7e-3;
   req.max_attempts = 2000;
