@@ -72,5 +72,4 @@ std::pair<double, double> mohr_coulomb(const std::vector<double>& sigma, const s
   return {cohesion, std::atan(slope) * 180.0 / std::numbers::pi};
 }
 
-
 }  // namespace crosscheck

@@ -67,6 +67,19 @@ int usage(const char* msg) {
   return kExitUsage;
 }
 
+// Makes the work folder; "" when it exists and takes files (a scratch folder made and
+// removed), otherwise why not.
+std::string workdir_problem(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) return "cannot create the directory: " + ec.message();
+  const fs::path probe = dir / (".crosscheck-write-test-" + std::to_string(::getpid()));
+  fs::create_directory(probe, ec);
+  if (ec) return "cannot write into the directory: " + ec.message();
+  fs::remove(probe, ec);
+  return "";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -141,15 +154,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "crosscheck: error: %s\n", e.what());
     return kExitUsage;
   }
-  std::error_code made;
-  fs::create_directories(opt.workdir, made);
-  const fs::path probe = opt.workdir / (".crosscheck-write-test-" + std::to_string(::getpid()));
-  std::error_code wrote;
-  if (!made && fs::is_directory(opt.workdir)) fs::create_directory(probe, wrote), fs::remove(probe, made);
-  if (made || wrote || !fs::is_directory(opt.workdir)) {
-    const std::string why = made    ? "cannot create the directory: " + made.message()
-                            : wrote ? "cannot write into the directory: " + wrote.message()
-                                    : std::string("exists and is not a directory");
+  if (const std::string why = workdir_problem(opt.workdir); !why.empty()) {
     std::fprintf(stderr, "crosscheck: error: --workdir %s: %s\n", opt.workdir.string().c_str(), why.c_str());
     return kExitUsage;
   }

@@ -193,15 +193,15 @@ void refuse_shared_centres(const ConfigNode& t, const std::vector<SceneParticle>
     return std::array<double, 4>{x[0], x[1], x[2], static_cast<double>(i)};
   };
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+  const std::size_t first_from_packing = particles.size() - packing_lines.size();
+  const auto name = [&](std::size_t n) {
+    return n < first_from_packing ? "particles[" + std::to_string(n) + "]"
+                                  : "line " + std::to_string(packing_lines[n - first_from_packing]) + " of " +
+                                        packing_path;
+  };
   for (std::size_t k = 1; k < order.size(); ++k) {
     const std::size_t i = order[k - 1], j = order[k];
     if (particles[i].position != particles[j].position) continue;
-    const std::size_t first_from_packing = particles.size() - packing_lines.size();
-    const auto name = [&](std::size_t n) {
-      return n < first_from_packing ? "particles[" + std::to_string(n) + "]"
-                                    : "line " + std::to_string(packing_lines[n - first_from_packing]) + " of " +
-                                          packing_path;
-    };
     t.fail(j < first_from_packing ? "particles" : "packing_file",
            name(i) + " and " + name(j) + " have the same centre: their contact has no normal");
   }

@@ -118,17 +118,25 @@ TEST(Generation, DiametersAreUniformOnTheRange) {
   EXPECT_NEAR(static_cast<double>(below) / s.size(), 0.5, 5 * std::sqrt(0.25 / 500.0));
 }
 
+// More spheres of d = 6-7 mm than a 10 mm cube can hold (at most 8, see below), with 2000
+// failed placements allowed.
+namespace {
+GenerationRequest spheres_of_6_to_7_mm_in_a_10_mm_cube(std::size_t count) {
+  GenerationRequest req;
+  req.region = GenerationRegion::box(Vec3::Zero(), Vec3(0.01, 0.01, 0.01));
+  req.count = count;
+  req.diameter_min = 6e-3;
+  req.diameter_max = 7e-3;
+  req.max_attempts = 2000;
+  return req;
+}
+}  // namespace
+
 TEST(Generation, StopsWhenAttemptsAreExhausted) {
   // A 10 mm cube cannot hold 1000 spheres of d >= 6 mm. Volume bound: the spheres are disjoint
   // balls inside the 10 mm cube (volume 1e-6 m^3), each of volume >= pi/6 (6e-3)^3 = 1.13e-7 m^3,
   // so at most 8 fit; the generator must give up after max_attempts failures and return fewer.
-  GenerationRequest req;
-  req.region = GenerationRegion::box(Vec3::Zero(), Vec3(0.01, 0.01, 0.01));
-  req.count = 1000;
-  req.diameter_min = 6e-3;
-  req.diameter_max = 7e-3;
-  req.max_attempts = 2000;
-  const auto s = generate_spheres(req);
+  const auto s = generate_spheres(spheres_of_6_to_7_mm_in_a_10_mm_cube(1000));
   EXPECT_GE(s.size(), 1u);
   EXPECT_LE(s.size(), 8u);
 }
@@ -137,13 +145,7 @@ TEST(Generation, AnImpossibleCountIsNotAllocated) {
   // 1e18 spheres in the same 10 mm cube, more than a vector can hold (reserving them throws
   // std::length_error): the generator reserves no more than could ever fit (the Kepler
   // bound, ~7 of d = 6 mm here), so it returns what fits.
-  GenerationRequest req;
-  req.region = GenerationRegion::box(Vec3::Zero(), Vec3(0.01, 0.01, 0.01));
-  req.count = 1000000000000000000ULL;
-  req.diameter_min = 6e-3;
-  req.diameter_max = 7e-3;
-  req.max_attempts = 2000;
-  const auto s = generate_spheres(req);
+  const auto s = generate_spheres(spheres_of_6_to_7_mm_in_a_10_mm_cube(1000000000000000000ULL));
   EXPECT_GE(s.size(), 1u);
   EXPECT_LE(s.size(), 8u);
 }
