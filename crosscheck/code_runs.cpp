@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <sys/wait.h>
 #include <thread>
+#include "run_stamp.hpp"
 
 namespace crosscheck {
 
@@ -66,22 +67,41 @@ bool yade_available(const std::string& yade) {
   return std::system(cmd.c_str()) == 0;
 }
 
-bool CodeRuns::reused(const fs::path& out) const {
-  if (!opt_.reuse || !fs::exists(out / "summary.json")) return false;
+bool CodeRuns::reused(const fs::path& out, const std::string& stamp, Reuse reuse) const {
+  if ((reuse == Reuse::kIfAsked && !opt_.reuse) || !fs::exists(out / "summary.json")) return false;
+  const std::optional<std::string> before = read_stamp(stamp_file(out));
+  if (!before) {  // not made by crosscheck (a load run by hand) or by one before the stamps
+    if (reuse == Reuse::kIfSameInputs) {
+      std::printf("crosscheck: not reusing %s: no record of what it was made from (%s); making it again\n",
+                  out.string().c_str(), stamp_file(out).string().c_str());
+      return false;
+    }
+    std::printf("crosscheck: reusing %s, made outside this cross-check: its inputs are not checked (no %s)\n",
+                out.string().c_str(), stamp_file(out).string().c_str());
+    return true;
+  }
+  if (*before != stamp) {
+    const std::string change = first_change(*before, stamp);
+    std::printf("crosscheck: not reusing %s: it was made from other inputs (%s); running it again\n",
+                out.string().c_str(), change.empty() ? "fewer input files now" : ("now: " + change).c_str());
+    return false;
+  }
   std::printf("crosscheck: reusing %s\n", out.string().c_str());
   return true;
 }
 
-bool CodeRuns::run(const std::string& code, const std::string& command, const fs::path& out) const {
+bool CodeRuns::run(const std::string& code, const std::string& command, const fs::path& out,
+                   const std::string& stamp) const {
   fs::create_directories(out.parent_path());
   const fs::path log = out.string() + ".log";
   // An earlier run's results must not pass for this run's if it fails (YADE's scripts write
-  // their results only at the end, colza replaces them only when it succeeds).
+  // their results only at the end, colza replaces them only when it succeeds), nor its stamp.
   if (!removable_run_folder(out, log)) {
     std::fprintf(stderr, "crosscheck: %s: %s holds files crosscheck did not write; not running there\n", code.c_str(),
                  out.string().c_str());
     return false;
   }
+  fs::remove(stamp_file(out));
   fs::remove_all(out);
   fs::remove(log);
   const int status = run_logged(command, log);
@@ -90,27 +110,58 @@ bool CodeRuns::run(const std::string& code, const std::string& command, const fs
                  tail_of(log).c_str());
     return false;
   }
+  try {
+    write_stamp(stamp_file(out), stamp);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "crosscheck: %s: %s\n", code.c_str(), e.what());
+    return false;
+  }
   return true;
 }
 
+std::optional<std::string> CodeRuns::stamp_of(const std::string& code, const std::string& command,
+                                              const std::vector<fs::path>& programs, const fs::path& config,
+                                              const std::vector<std::string>& arguments) const {
+  try {
+    return run_stamp(command, programs, config, arguments);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "crosscheck: %s: %s\n", code.c_str(), e.what());
+    return std::nullopt;
+  }
+}
+
 bool CodeRuns::run_colza(const std::string& scenario, const fs::path& config, const fs::path& out,
-                         const std::vector<std::string>& sets, const std::vector<std::string>& extra) const {
-  if (reused(out)) return true;
+                         const std::vector<std::string>& sets, const std::vector<std::string>& extra,
+                         Reuse reuse) const {
   std::string cmd = quote(opt_.colza.string()) + " run " + scenario + " --config " + quote(config.string()) +
                     " --out " + quote(out.string()) + " --force --quiet --threads 1";  // as YADE -j 1
   for (const auto& s : sets) cmd += " --set " + quote(s);
   for (const auto& e : extra) cmd += " " + quote(e);
-  return run("colza", cmd, out);
+  std::vector<std::string> arguments = sets;
+  arguments.insert(arguments.end(), extra.begin(), extra.end());
+  const std::optional<std::string> stamp = stamp_of("colza", cmd, {opt_.colza}, config, arguments);
+  if (!stamp) return false;
+  if (reused(out, *stamp, reuse)) return true;
+  return run("colza", cmd, out, *stamp);
 }
 
 bool CodeRuns::run_yade(const std::string& script, const fs::path& config, const fs::path& out,
                         const std::vector<std::string>& extra) const {
-  if (reused(out)) return true;
-  const fs::path py = opt_.source / "yade-scripts" / script;
+  const fs::path scripts = opt_.source / "yade-scripts";
+  const fs::path py = scripts / script;
   std::string cmd = quote(opt_.yade) + " -n -j 1 -x " + quote(py.string()) + " " + quote(config.string()) + " " +
                     quote(out.string());
   for (const auto& e : extra) cmd += " " + quote(e);
-  return run("yade", cmd, out);
+  // The script and the modules it imports from yade-scripts/.
+  std::vector<fs::path> programs;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(scripts, ec))
+    if (entry.path().extension() == ".py") programs.push_back(entry.path());
+  std::sort(programs.begin(), programs.end());
+  const std::optional<std::string> stamp = stamp_of("yade", cmd, programs, config, extra);
+  if (!stamp) return false;
+  if (reused(out, *stamp, Reuse::kIfAsked)) return true;
+  return run("yade", cmd, out, *stamp);
 }
 
 std::vector<bool> run_in_parallel(const std::vector<std::function<bool()>>& jobs) {

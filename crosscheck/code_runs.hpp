@@ -3,6 +3,7 @@
 #pragma once
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <toml++/toml.h>
 #include <vector>
@@ -18,6 +19,18 @@ std::string quote(const std::string& s);
 // Whether `yade` runs as a command (on PATH or a path).
 bool yade_available(const std::string& yade);
 
+// When a finished run in the run folder (summary.json present) stands instead of a new run.
+// A run crosscheck made stands only if made from the same inputs (its stamp, run_stamp.hpp:
+// command, config, packings, program).
+enum class Reuse {
+  // With --reuse (an interrupted cross-check continues where it stopped). A finished run
+  // without a stamp (a load run by hand into the work dir) stands too, with a notice.
+  kIfAsked,
+  // Always, if its stamp matches: a product kept in the work dir, such as the shear box's
+  // sample; one without a stamp is made again.
+  kIfSameInputs,
+};
+
 class CodeRuns {
  public:
   explicit CodeRuns(const Options& opt) : opt_(opt) {}
@@ -26,15 +39,22 @@ class CodeRuns {
   // colza run <scenario> --config <config> --out <out> [--set s]... [extra]...; false (and
   // the log's tail on stderr) if it failed.
   bool run_colza(const std::string& scenario, const fs::path& config, const fs::path& out,
-                 const std::vector<std::string>& sets = {}, const std::vector<std::string>& extra = {}) const;
+                 const std::vector<std::string>& sets = {}, const std::vector<std::string>& extra = {},
+                 Reuse reuse = Reuse::kIfAsked) const;
   // yade -n -j 1 -x yade-scripts/<script> <config> <out> [extra]...; as run_colza.
   bool run_yade(const std::string& script, const fs::path& config, const fs::path& out,
                 const std::vector<std::string>& extra = {}) const;
 
  private:
-  // --reuse: a finished run (summary.json present) stands.
-  bool reused(const fs::path& out) const;
-  bool run(const std::string& code, const std::string& command, const fs::path& out) const;
+  // Whether the finished run in `out` (summary.json present) stands, as `reuse` says; prints
+  // why one made from other inputs does not.
+  bool reused(const fs::path& out, const std::string& stamp, Reuse reuse) const;
+  // Runs `command` into `out` (its log beside it) and, when it succeeds, writes its stamp.
+  bool run(const std::string& code, const std::string& command, const fs::path& out, const std::string& stamp) const;
+  // The stamp of a run, or nothing (and the reason on stderr) if its inputs cannot be read.
+  std::optional<std::string> stamp_of(const std::string& code, const std::string& command,
+                                      const std::vector<fs::path>& programs, const fs::path& config,
+                                      const std::vector<std::string>& arguments) const;
 
   const Options& opt_;
 };

@@ -22,10 +22,12 @@
 //   all        micro, the small oedometer and shear (and the full ones with --size full).
 //
 // --reuse: a run whose output directory in --workdir already holds summary.json (both codes
-// write it last) is not run again, so an interrupted full-size cross-check (hours of YADE)
-// continues where it stopped. Only for a workdir made from the same sources, configs and
-// tolerance table (an ensemble's perturbed packings are rewritten on every run, but a reused
-// realisation is not checked against them).
+// write it last) is not run again if its stamp (<out>.inputs, run_stamp.hpp: command, config,
+// packings, program) matches, so an interrupted full-size cross-check (hours of YADE)
+// continues where it stopped; a run of other inputs is run again. A finished run without a
+// stamp (a load run by hand) is taken with a notice. The tolerance table is not stamped: what
+// of it shapes a run (a config, the ensemble's perturbation, the early steps) reaches the run
+// through its command, config or packing, which are.
 // --loads: the shear box runs these normal stresses (Pa) instead of [shear.<size>] loads, e.g.
 // two of the four full-size loads when the others are not finished (C and Phi are then those
 // of the line through the given loads; the table says so).

@@ -46,21 +46,20 @@ std::vector<double> loads_to_run(const CheckContext& ctx, const ShearSetting& s,
   return loads;
 }
 
-// The sample's packing file, made once by colza (the load of this run is cut short: it only
-// makes packing.txt); nothing (and a failed row) if colza could not make it.
+// The sample's packing file, made by colza (the load of this run is cut short: it only makes
+// packing.txt) and kept in the work dir for the next cross-check while the scene and colza
+// stay the same (Reuse::kIfSameInputs); nothing (and a failed row) if colza could not make it.
 std::optional<fs::path> shear_sample(const CheckContext& ctx, const ShearSetting& s, Report& report,
                                      double first_load) {
   const fs::path prep = s.work / "sample";
-  if (!fs::exists(prep / "packing.txt")) {
-    std::printf("crosscheck: %s: colza makes the sample (generation, settling, cut)...\n", s.label.c_str());
-    std::fflush(stdout);
-    if (!ctx.runs.run_colza("shear", s.scene, prep,
-                            {"shear_box.consolidation_max_time=1e-9", "shear_box.strength_window_start=0",
-                             "shear_box.strength_window_end=1e-9", "shear_box.shear_displacement=1e-9"},
-                            normal_stress_argument(first_load))) {
-      report.fail(s.label, "colza could not make the sample");
-      return std::nullopt;
-    }
+  std::printf("crosscheck: %s: the sample (colza: generation, settling, cut)...\n", s.label.c_str());
+  std::fflush(stdout);
+  if (!ctx.runs.run_colza("shear", s.scene, prep,
+                          {"shear_box.consolidation_max_time=1e-9", "shear_box.strength_window_start=0",
+                           "shear_box.strength_window_end=1e-9", "shear_box.shear_displacement=1e-9"},
+                          normal_stress_argument(first_load), Reuse::kIfSameInputs)) {
+    report.fail(s.label, "colza could not make the sample");
+    return std::nullopt;
   }
   return fs::absolute(prep / "packing.txt");
 }

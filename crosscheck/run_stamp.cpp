@@ -1,0 +1,131 @@
+#include "run_stamp.hpp"
+
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <toml++/toml.h>
+
+namespace crosscheck {
+
+namespace {
+
+// FNV-1a 64 of a file's bytes as 16 hex digits (the same function as colza's
+// io/fingerprint.hpp, written here so the cross-check shares no code with colza).
+std::string file_fingerprint(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a 64 offset basis
+  char buf[1 << 16];
+  while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+    for (std::streamsize k = 0; k < in.gcount(); ++k) h = (h ^ static_cast<unsigned char>(buf[k])) * 1099511628211ull;
+    if (!in) break;
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
+// Programs are stamped once per process (colza's executable is megabytes; an ensemble stamps
+// dozens of runs, from run_in_parallel's threads).
+std::string program_fingerprint(const fs::path& file) {
+  static std::mutex mutex;
+  static std::map<fs::path, std::string> known;
+  const std::lock_guard<std::mutex> lock(mutex);
+  auto it = known.find(file);
+  if (it == known.end()) it = known.emplace(file, file_fingerprint(file)).first;
+  return it->second;
+}
+
+bool names_a_file(const fs::path& p) {
+  std::error_code ec;
+  return !p.empty() && fs::is_regular_file(p, ec);
+}
+
+// Every string of a TOML document, tables and arrays included.
+void collect_strings(const toml::node& node, std::vector<std::string>& out) {
+  if (const auto* s = node.as_string()) {
+    out.push_back(s->get());
+  } else if (const auto* t = node.as_table()) {
+    for (const auto& [key, value] : *t) collect_strings(value, out);
+  } else if (const auto* a = node.as_array()) {
+    for (const auto& value : *a) collect_strings(value, out);
+  }
+}
+
+}  // namespace
+
+std::string run_stamp(const std::string& command, const std::vector<fs::path>& programs, const fs::path& config,
+                      const std::vector<std::string>& arguments) {
+  std::ostringstream stamp;
+  stamp << "command " << command << "\n";
+  for (const fs::path& p : programs)
+    if (names_a_file(p)) stamp << "program " << p.string() << " " << program_fingerprint(p) << "\n";
+  // Inputs in a fixed order, each once: the config, the files its strings name, the files
+  // the arguments name (a --set key=value names a file by its value).
+  std::vector<fs::path> inputs{config};
+  toml::table doc;
+  try {
+    doc = toml::parse_file(config.string());
+  } catch (const toml::parse_error& e) {
+    throw std::runtime_error(config.string() + ": " + std::string(e.description()));
+  }
+  std::vector<std::string> strings;
+  collect_strings(doc, strings);
+  for (const std::string& s : strings) {
+    if (names_a_file(s))
+      inputs.emplace_back(s);
+    else if (fs::path(s).is_relative() && names_a_file(config.parent_path() / s))
+      inputs.push_back(config.parent_path() / s);
+  }
+  for (const std::string& a : arguments) {
+    const std::size_t eq = a.find('=');
+    const std::string value = eq == std::string::npos ? a : a.substr(eq + 1);
+    if (names_a_file(value)) inputs.emplace_back(value);
+  }
+  std::set<fs::path> seen;
+  for (const fs::path& p : inputs)
+    if (seen.insert(p).second) stamp << "input " << p.string() << " " << file_fingerprint(p) << "\n";
+  return stamp.str();
+}
+
+fs::path stamp_file(const fs::path& out) { return out.string() + ".inputs"; }
+
+std::optional<std::string> read_stamp(const fs::path& file) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) return std::nullopt;
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void write_stamp(const fs::path& file, const std::string& stamp) {
+  const fs::path partial = file.string() + ".partial";
+  {
+    std::ofstream o(partial, std::ios::binary | std::ios::trunc);
+    o << stamp;
+    o.flush();
+    if (!o) throw std::runtime_error("cannot write " + partial.string());
+  }
+  std::error_code ec;
+  fs::rename(partial, file, ec);
+  if (ec) throw std::runtime_error("cannot rename " + partial.string() + " to " + file.string() + ": " + ec.message());
+}
+
+std::string first_change(const std::string& before, const std::string& now) {
+  std::set<std::string> old_lines;
+  std::istringstream b(before), n(now);
+  std::string line;
+  while (std::getline(b, line)) old_lines.insert(line);
+  while (std::getline(n, line))
+    if (!old_lines.count(line)) return line;
+  return {};
+}
+
+}  // namespace crosscheck

@@ -1,0 +1,42 @@
+// What a run of a code was made from, so that a finished run is reused only for the same
+// inputs. The stamp is a text file beside the run folder (<out>.inputs), written when the run
+// has succeeded; it lists, one per line:
+//   command <the shell command>
+//   program <file> <fingerprint>   colza's executable, or YADE's scripts (yade-scripts/*.py)
+//   input <file> <fingerprint>     the config, every existing file one of its strings names
+//                                  (a packing_file), and every existing file an argument names
+// A fingerprint is FNV-1a 64 of the file's bytes (16 hex digits). Two stamps are equal when
+// every line is: the same command on byte-identical configs, packings and programs. Nothing
+// else a run reads (the system's libraries, YADE's installation) is stamped.
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace crosscheck {
+
+namespace fs = std::filesystem;
+
+// The stamp of `command`, run by `programs` on `config` with `arguments` (the --set values
+// and extra arguments: those that name an existing file are stamped by content). A string
+// in the config names a file as given or relative to the config's folder. Throws
+// std::runtime_error if the config cannot be read.
+std::string run_stamp(const std::string& command, const std::vector<fs::path>& programs, const fs::path& config,
+                      const std::vector<std::string>& arguments);
+
+// <out>.inputs, the stamp file of the run folder `out`.
+fs::path stamp_file(const fs::path& out);
+
+// The stamp file's text; nothing if it does not exist or cannot be read.
+std::optional<std::string> read_stamp(const fs::path& file);
+
+// Writes `stamp` to `file` through a temporary name and a rename, so a stamp is whole or
+// absent. Throws std::runtime_error if it cannot be written.
+void write_stamp(const fs::path& file, const std::string& stamp);
+
+// The first line of `now` that `before` lacks (what changed), for the message that says why
+// a run is not reused; empty if every line of `now` is in `before`.
+std::string first_change(const std::string& before, const std::string& now);
+
+}  // namespace crosscheck

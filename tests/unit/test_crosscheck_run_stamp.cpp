@@ -1,0 +1,147 @@
+// A finished run of the cross-check stands only when it was made from the same inputs
+// (crosscheck/run_stamp.hpp): with --reuse, and always for the shear box's sample kept in
+// the work dir (a run without a stamp, made by hand, stands under --reuse with a notice). Before, --reuse took any folder holding summary.json, and the sample was
+// reused whenever packing.txt existed, so a changed scene, packing or colza was silently
+// compared with runs of the old one. The runs here are of a fake colza (a shell script that
+// writes summary.json and counts its calls).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "crosscheck/code_runs.hpp"
+#include "crosscheck/run_stamp.hpp"
+#include "scratch_dir.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using crosscheck::CodeRuns;
+using crosscheck::Options;
+using crosscheck::Reuse;
+using crosscheck::first_change;
+using crosscheck::read_stamp;
+using crosscheck::run_stamp;
+using crosscheck::stamp_file;
+
+// A fake colza: writes <--out>/summary.json and a line to calls.txt beside itself; exits 1
+// when fail.flag exists beside it.
+fs::path write_fake_colza(const colza::testing::ScratchDir& dir) {
+  const fs::path exe = dir / "fake-colza";
+  std::ofstream(exe) << "#!/bin/sh\n"
+                        "here=$(dirname \"$0\")\n"
+                        "echo \"$*\" >> \"$here/calls.txt\"\n"
+                        "[ -e \"$here/fail.flag\" ] && exit 1\n"
+                        "while [ $# -gt 0 ]; do\n"
+                        "  if [ \"$1\" = --out ]; then mkdir -p \"$2\" && echo '{}' > \"$2/summary.json\"; fi\n"
+                        "  shift\n"
+                        "done\n";
+  fs::permissions(exe, fs::perms::owner_all);
+  return exe;
+}
+
+int calls(const colza::testing::ScratchDir& dir) {
+  std::ifstream in(dir / "calls.txt");
+  int n = 0;
+  for (std::string line; std::getline(in, line);) ++n;
+  return n;
+}
+
+TEST(CrosscheckRunStamp, NamesEveryFileTheRunReadsByContent) {
+  colza::testing::ScratchDir dir;
+  dir.write("packing.txt", "0 0 0.01 0.003\n");
+  dir.write("other.txt", "0 0 0.02 0.003\n");
+  // A packing named by a path relative to the config's folder, a --set naming a file, and a
+  // string that names no file (not stamped).
+  const fs::path config = dir.write("run.toml", "[oedometer]\npacking_file = \"packing.txt\"\nlabel = \"x\"\n");
+  const std::string set = "shear_box.packing_file=" + (dir / "other.txt").string();
+  const std::string a = run_stamp("colza run", {}, config, {set});
+  EXPECT_NE(a.find("input " + config.string() + " "), std::string::npos) << a;
+  EXPECT_NE(a.find("input " + (dir / "packing.txt").string() + " "), std::string::npos) << a;
+  EXPECT_NE(a.find("input " + (dir / "other.txt").string() + " "), std::string::npos) << a;
+  EXPECT_EQ(a, run_stamp("colza run", {}, config, {set}));
+
+  // A changed byte in any input file, or another command, is another stamp; the change is named.
+  dir.write("packing.txt", "0 0 0.01 0.0031\n");
+  const std::string b = run_stamp("colza run", {}, config, {set});
+  EXPECT_NE(a, b);
+  EXPECT_EQ(first_change(a, b).rfind("input " + (dir / "packing.txt").string() + " ", 0), 0u) << first_change(a, b);
+  EXPECT_EQ(first_change(b, run_stamp("colza run --seed 2", {}, config, {set})), "command colza run --seed 2");
+  EXPECT_EQ(first_change(b, b), "");
+
+  EXPECT_THROW(run_stamp("colza run", {}, dir / "missing.toml", {}), std::runtime_error);
+}
+
+TEST(CrosscheckRunStamp, ReuseTakesOnlyARunOfTheSameInputs) {
+  colza::testing::ScratchDir dir;
+  Options opt;
+  opt.colza = write_fake_colza(dir);
+  opt.reuse = true;
+  const CodeRuns runs(opt);
+  const fs::path packing = dir.write("packing.txt", "0 0 0.01 0.003\n");
+  const fs::path config = dir.write("run.toml", "[oedometer]\npacking_file = \"" + packing.string() + "\"\n");
+  const fs::path out = dir / "work" / "colza";
+
+  ASSERT_TRUE(runs.run_colza("oedometer", config, out));
+  EXPECT_EQ(calls(dir), 1);
+  ASSERT_TRUE(read_stamp(stamp_file(out)).has_value());
+  EXPECT_TRUE(runs.run_colza("oedometer", config, out));  // reused
+  EXPECT_EQ(calls(dir), 1);
+
+  // Another packing (same path), another --set, another colza: run again.
+  std::ofstream(packing) << "0 0 0.01 0.0031\n";
+  EXPECT_TRUE(runs.run_colza("oedometer", config, out));
+  EXPECT_EQ(calls(dir), 2);
+  EXPECT_TRUE(runs.run_colza("oedometer", config, out, {"integration.time_step=1e-6"}));
+  EXPECT_EQ(calls(dir), 3);
+  // (A rebuilt colza is a file of its own here: programs are fingerprinted once per process.)
+  Options rebuilt = opt;
+  rebuilt.colza = dir / "fake-colza-2";
+  fs::copy_file(opt.colza, rebuilt.colza);
+  std::ofstream(rebuilt.colza, std::ios::app) << "# rebuilt\n";
+  const CodeRuns runs_of_rebuilt(rebuilt);
+  EXPECT_TRUE(runs_of_rebuilt.run_colza("oedometer", config, out, {"integration.time_step=1e-6"}));
+  EXPECT_EQ(calls(dir), 4);
+
+
+  // A failed run leaves neither results nor a stamp, so its folder is never reused.
+  std::ofstream(dir / "fail.flag") << "";
+  EXPECT_FALSE(runs.run_colza("oedometer", config, out));
+  EXPECT_FALSE(fs::exists(stamp_file(out)));
+  EXPECT_FALSE(runs.run_colza("oedometer", config, out));
+  EXPECT_EQ(calls(dir), 6);
+  fs::remove(dir / "fail.flag");
+
+  // A finished run without a stamp (a load run by hand into the work dir) stands under
+  // --reuse, with a notice.
+  ASSERT_TRUE(runs.run_colza("oedometer", config, out));
+  fs::remove(stamp_file(out));
+  EXPECT_TRUE(runs.run_colza("oedometer", config, out));
+  EXPECT_EQ(calls(dir), 7);
+}
+
+TEST(CrosscheckRunStamp, WithoutReuseOnlyAKeptProductStands) {
+  colza::testing::ScratchDir dir;
+  Options opt;
+  opt.colza = write_fake_colza(dir);
+  const CodeRuns runs(opt);  // no --reuse
+  const fs::path config = dir.write("scene.toml", "[shear_box]\nwidth = 0.2\n");
+  const fs::path sample = dir / "work" / "sample", load = dir / "work" / "load";
+
+  ASSERT_TRUE(runs.run_colza("shear", config, load));
+  ASSERT_TRUE(runs.run_colza("shear", config, load));
+  EXPECT_EQ(calls(dir), 2);  // a run of the check is always run again without --reuse
+
+  ASSERT_TRUE(runs.run_colza("shear", config, sample, {}, {}, Reuse::kIfSameInputs));
+  ASSERT_TRUE(runs.run_colza("shear", config, sample, {}, {}, Reuse::kIfSameInputs));
+  EXPECT_EQ(calls(dir), 3);  // the sample is kept ...
+  dir.write("scene.toml", "[shear_box]\nwidth = 0.1\n");
+  ASSERT_TRUE(runs.run_colza("shear", config, sample, {}, {}, Reuse::kIfSameInputs));
+  EXPECT_EQ(calls(dir), 4);  // ... until its scene changes
+  fs::remove(stamp_file(sample));
+  ASSERT_TRUE(runs.run_colza("shear", config, sample, {}, {}, Reuse::kIfSameInputs));
+  EXPECT_EQ(calls(dir), 5);  // ... and one without a stamp (an older crosscheck's) is made again
+}
+
+}  // namespace
