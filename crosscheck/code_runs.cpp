@@ -69,14 +69,14 @@ bool yade_available(const std::string& yade) {
 
 bool CodeRuns::reused(const fs::path& out, const std::string& stamp, Reuse reuse) const {
   if ((reuse == Reuse::kIfAsked && !opt_.reuse) || !fs::exists(out / "summary.json")) return false;
-  const std::optional<std::string> before = read_stamp(stamp_file(out));
-  if (!before) {  // not made by crosscheck (a load run by hand) or by one before the stamps
+  const std::optional<std::string> before = read_stamp(out);
+  if (!before) {  // a load run by hand, or by a crosscheck before the stamps
     if (reuse == Reuse::kIfSameInputs) {
-      std::printf("crosscheck: not reusing %s: no record of what it was made from (%s); making it again\n",
+      std::printf("crosscheck: not reusing %s: no stamp of what it was made from (%s); making it again\n",
                   out.string().c_str(), stamp_file(out).string().c_str());
       return false;
     }
-    std::printf("crosscheck: reusing %s, made outside this cross-check: its inputs are not checked (no %s)\n",
+    std::printf("crosscheck: reusing %s without checking its inputs: no stamp (%s) vouches for its results\n",
                 out.string().c_str(), stamp_file(out).string().c_str());
     return true;
   }
@@ -101,9 +101,15 @@ bool CodeRuns::run(const std::string& code, const std::string& command, const fs
                  out.string().c_str());
     return false;
   }
-  fs::remove(stamp_file(out));
-  fs::remove_all(out);
-  fs::remove(log);
+  std::error_code ec;
+  fs::remove(stamp_file(out), ec);
+  if (!ec) fs::remove_all(out, ec);
+  if (!ec) fs::remove(log, ec);
+  if (ec) {
+    std::fprintf(stderr, "crosscheck: %s: cannot clear %s for the run: %s\n", code.c_str(), out.string().c_str(),
+                 ec.message().c_str());
+    return false;
+  }
   const int status = run_logged(command, log);
   if (status != 0) {
     std::fprintf(stderr, "crosscheck: %s failed (exit %d): %s\n%s", code.c_str(), status, command.c_str(),
@@ -111,7 +117,7 @@ bool CodeRuns::run(const std::string& code, const std::string& command, const fs
     return false;
   }
   try {
-    write_stamp(stamp_file(out), stamp);
+    write_stamp(out, stamp);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "crosscheck: %s: %s\n", code.c_str(), e.what());
     return false;
@@ -152,16 +158,24 @@ bool CodeRuns::run_yade(const std::string& script, const fs::path& config, const
   std::string cmd = quote(opt_.yade) + " -n -j 1 -x " + quote(py.string()) + " " + quote(config.string()) + " " +
                     quote(out.string());
   for (const auto& e : extra) cmd += " " + quote(e);
-  // The script and the modules it imports from yade-scripts/.
-  std::vector<fs::path> programs;
+  // The script and the modules of yade-scripts/ (every .py but the other run_*.py scripts,
+  // which no script imports).
+  std::vector<fs::path> programs{py};
   std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(scripts, ec))
-    if (entry.path().extension() == ".py") programs.push_back(entry.path());
-  std::sort(programs.begin(), programs.end());
+  for (const auto& entry : fs::directory_iterator(scripts, ec)) {
+    const fs::path& f = entry.path();
+    if (f.extension() == ".py" && f.filename().string().rfind("run_", 0) != 0) programs.push_back(f);
+  }
+  std::sort(programs.begin() + 1, programs.end());
   const std::optional<std::string> stamp = stamp_of("yade", cmd, programs, config, extra);
   if (!stamp) return false;
   if (reused(out, *stamp, Reuse::kIfAsked)) return true;
   return run("yade", cmd, out, *stamp);
+}
+
+void forget_product_without(const fs::path& out, const std::string& file) {
+  std::error_code ec;
+  if (!fs::exists(out / file, ec)) fs::remove(stamp_file(out), ec);
 }
 
 std::vector<bool> run_in_parallel(const std::vector<std::function<bool()>>& jobs) {

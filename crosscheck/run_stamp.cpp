@@ -7,6 +7,7 @@
 #include <mutex>
 #include <set>
 #include <sstream>
+#include <tuple>
 #include <stdexcept>
 #include <toml++/toml.h>
 
@@ -30,15 +31,24 @@ std::string file_fingerprint(const fs::path& file) {
   return hex;
 }
 
-// Programs are stamped once per process (colza's executable is megabytes; an ensemble stamps
-// dozens of runs, from run_in_parallel's threads).
+// Programs are stamped once per version of the file (colza's executable is megabytes; an
+// ensemble stamps dozens of runs, from run_in_parallel's threads): a rebuilt program, at the
+// same path, has another size or modification time and is read again.
 std::string program_fingerprint(const fs::path& file) {
   static std::mutex mutex;
-  static std::map<fs::path, std::string> known;
+  static std::map<std::tuple<fs::path, std::uintmax_t, fs::file_time_type>, std::string> known;
+  std::error_code ec;
+  const auto key = std::make_tuple(file, fs::file_size(file, ec), fs::last_write_time(file, ec));
   const std::lock_guard<std::mutex> lock(mutex);
-  auto it = known.find(file);
-  if (it == known.end()) it = known.emplace(file, file_fingerprint(file)).first;
+  auto it = known.find(key);
+  if (it == known.end()) it = known.emplace(key, file_fingerprint(file)).first;
   return it->second;
+}
+
+fs::path absolute_path(const fs::path& p) {
+  std::error_code ec;
+  const fs::path a = fs::absolute(p, ec);
+  return (ec ? p : a).lexically_normal();
 }
 
 bool names_a_file(const fs::path& p) {
@@ -64,9 +74,10 @@ std::string run_stamp(const std::string& command, const std::vector<fs::path>& p
   std::ostringstream stamp;
   stamp << "command " << command << "\n";
   for (const fs::path& p : programs)
-    if (names_a_file(p)) stamp << "program " << p.string() << " " << program_fingerprint(p) << "\n";
-  // Inputs in a fixed order, each once: the config, the files its strings name, the files
-  // the arguments name (a --set key=value names a file by its value).
+    if (names_a_file(p)) stamp << "program " << absolute_path(p).string() << " " << program_fingerprint(p) << "\n";
+  // Inputs in a fixed order, each once: the config, the files its strings name (relative to
+  // the config's folder, as colza and the YADE scripts read them), the files the arguments
+  // name (a --set key=value by its value, relative to the working folder, as colza reads it).
   std::vector<fs::path> inputs{config};
   toml::table doc;
   try {
@@ -77,10 +88,8 @@ std::string run_stamp(const std::string& command, const std::vector<fs::path>& p
   std::vector<std::string> strings;
   collect_strings(doc, strings);
   for (const std::string& s : strings) {
-    if (names_a_file(s))
-      inputs.emplace_back(s);
-    else if (fs::path(s).is_relative() && names_a_file(config.parent_path() / s))
-      inputs.push_back(config.parent_path() / s);
+    const fs::path named = fs::path(s).is_absolute() ? fs::path(s) : config.parent_path() / s;
+    if (!s.empty() && names_a_file(named)) inputs.push_back(named);
   }
   for (const std::string& a : arguments) {
     const std::size_t eq = a.find('=');
@@ -89,27 +98,50 @@ std::string run_stamp(const std::string& command, const std::vector<fs::path>& p
   }
   std::set<fs::path> seen;
   for (const fs::path& p : inputs)
-    if (seen.insert(p).second) stamp << "input " << p.string() << " " << file_fingerprint(p) << "\n";
+    if (seen.insert(absolute_path(p)).second)
+      stamp << "input " << absolute_path(p).string() << " " << file_fingerprint(p) << "\n";
   return stamp.str();
 }
 
 fs::path stamp_file(const fs::path& out) { return out.string() + ".inputs"; }
 
-std::optional<std::string> read_stamp(const fs::path& file) {
+namespace {
+
+// The stamp's last line: the fingerprint of the run's summary.json (written last by both
+// codes), so that a stamp vouches only for the results it was written with.
+std::string result_line(const fs::path& out) {
+  const fs::path summary = out / "summary.json";
+  return "result " + summary.string() + " " + file_fingerprint(summary) + "\n";
+}
+
+}  // namespace
+
+std::optional<std::string> read_stamp(const fs::path& out) {
+  const fs::path file = stamp_file(out);
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) return std::nullopt;
   std::ifstream in(file, std::ios::binary);
   if (!in) return std::nullopt;
   std::ostringstream text;
   text << in.rdbuf();
-  return text.str();
+  std::string stamp = text.str();
+  try {
+    const std::string result = result_line(out);
+    if (stamp.size() < result.size() || stamp.compare(stamp.size() - result.size(), result.size(), result) != 0)
+      return std::nullopt;  // other results than those the stamp was written with
+    stamp.resize(stamp.size() - result.size());
+  } catch (const std::exception&) {
+    return std::nullopt;  // no summary.json
+  }
+  return stamp;
 }
 
-void write_stamp(const fs::path& file, const std::string& stamp) {
+void write_stamp(const fs::path& out, const std::string& stamp) {
+  const fs::path file = stamp_file(out);
   const fs::path partial = file.string() + ".partial";
   {
     std::ofstream o(partial, std::ios::binary | std::ios::trunc);
-    o << stamp;
+    o << stamp << result_line(out);
     o.flush();
     if (!o) throw std::runtime_error("cannot write " + partial.string());
   }

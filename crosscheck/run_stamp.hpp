@@ -2,12 +2,18 @@
 // inputs. The stamp is a text file beside the run folder (<out>.inputs), written when the run
 // has succeeded; it lists, one per line:
 //   command <the shell command>
-//   program <file> <fingerprint>   colza's executable, or YADE's scripts (yade-scripts/*.py)
+//   program <file> <fingerprint>   colza's executable, or the YADE script and the modules of
+//                                  yade-scripts/ it imports
 //   input <file> <fingerprint>     the config, every existing file one of its strings names
-//                                  (a packing_file), and every existing file an argument names
-// A fingerprint is FNV-1a 64 of the file's bytes (16 hex digits). Two stamps are equal when
-// every line is: the same command on byte-identical configs, packings and programs. Nothing
-// else a run reads (the system's libraries, YADE's installation) is stamped.
+//                                  (relative to the config's folder: a packing_file), and
+//                                  every existing file an argument names
+//   result <summary.json> <fingerprint>   the results the stamp vouches for
+// A fingerprint is FNV-1a 64 of the file's bytes (16 hex digits); paths are absolute. Two
+// runs have the same inputs when every line but the last is equal: the same command on
+// byte-identical configs, packings and programs. Nothing else a run reads (the system's
+// libraries, YADE's installation) is stamped. colza's executable embeds its git revision
+// (with -dirty for uncommitted edits), so any new build of another source tree is another
+// program and its runs are made again.
 #pragma once
 #include <filesystem>
 #include <optional>
@@ -28,12 +34,15 @@ std::string run_stamp(const std::string& command, const std::vector<fs::path>& p
 // <out>.inputs, the stamp file of the run folder `out`.
 fs::path stamp_file(const fs::path& out);
 
-// The stamp file's text; nothing if it does not exist or cannot be read.
-std::optional<std::string> read_stamp(const fs::path& file);
+// The inputs part of the stamp of the run in `out`; nothing if there is no stamp, or its
+// result line does not match out/summary.json (results written after it, e.g. by a run
+// made by hand into the folder).
+std::optional<std::string> read_stamp(const fs::path& out);
 
-// Writes `stamp` to `file` through a temporary name and a rename, so a stamp is whole or
-// absent. Throws std::runtime_error if it cannot be written.
-void write_stamp(const fs::path& file, const std::string& stamp);
+// Writes `stamp` and the result line of out/summary.json to the stamp file of `out` through
+// a temporary name and a rename, so a stamp is whole or absent. Throws std::runtime_error if
+// it cannot be written or summary.json cannot be read.
+void write_stamp(const fs::path& out, const std::string& stamp);
 
 // The first line of `now` that `before` lacks (what changed), for the message that says why
 // a run is not reused; empty if every line of `now` is in `before`.

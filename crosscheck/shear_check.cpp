@@ -49,9 +49,15 @@ std::vector<double> loads_to_run(const CheckContext& ctx, const ShearSetting& s,
 // The sample's packing file, made by colza (the load of this run is cut short: it only makes
 // packing.txt) and kept in the work dir for the next cross-check while the scene and colza
 // stay the same (Reuse::kIfSameInputs); nothing (and a failed row) if colza could not make it.
+// The run's normal stress is the table's first load whatever --loads says: the sample does
+// not depend on it (packing.txt is written before the load), and another value would be
+// another stamp, so the sample would be made again.
 std::optional<fs::path> shear_sample(const CheckContext& ctx, const ShearSetting& s, Report& report,
                                      double first_load) {
+  if (const auto* table_loads = s.t.at_path("loads").as_array(); table_loads && !table_loads->empty())
+    first_load = table_loads->get(0)->value<double>().value_or(first_load);
   const fs::path prep = s.work / "sample";
+  forget_product_without(prep, "packing.txt");
   std::printf("crosscheck: %s: the sample (colza: generation, settling, cut)...\n", s.label.c_str());
   std::fflush(stdout);
   if (!ctx.runs.run_colza("shear", s.scene, prep,

@@ -73,6 +73,51 @@ TEST(CrosscheckRunStamp, NamesEveryFileTheRunReadsByContent) {
   EXPECT_THROW(run_stamp("colza run", {}, dir / "missing.toml", {}), std::runtime_error);
 }
 
+TEST(CrosscheckRunStamp, AConfigNamesFilesRelativeToItsFolderNotTheWorkingFolder) {
+  colza::testing::ScratchDir dir;
+  fs::create_directories(dir / "scene");
+  dir.write("scene/packing.txt", "0 0 0.01 0.003\n");
+  dir.write("packing.txt", "a file of the working folder, which colza does not read\n");
+  const fs::path config = dir.write("scene/run.toml", "[oedometer]\npacking_file = \"packing.txt\"\n");
+  const fs::path before = fs::current_path();
+  fs::current_path(dir.path());
+  const std::string stamp = run_stamp("colza run", {}, config, {});
+  fs::current_path(before);
+  EXPECT_NE(stamp.find("input " + (dir / "scene" / "packing.txt").string() + " "), std::string::npos) << stamp;
+  EXPECT_EQ(stamp.find("input " + (dir / "packing.txt").string() + " "), std::string::npos) << stamp;
+}
+
+TEST(CrosscheckRunStamp, AYadeRunIsStampedWithItsScriptAndTheModules) {
+  colza::testing::ScratchDir dir;
+  fs::create_directories(dir / "yade-scripts");
+  dir.write("yade-scripts/run_shear.py", "import colza_yade\n");
+  dir.write("yade-scripts/run_scene.py", "import colza_yade\n");
+  dir.write("yade-scripts/colza_yade.py", "# the module\n");
+  const fs::path yade = dir / "fake-yade";  // yade -n -j 1 -x <script> <config> <out>: $7 is out
+  std::ofstream(yade) << "#!/bin/sh\necho \"$*\" >> \"$(dirname \"$0\")/calls.txt\"\n"
+                         "mkdir -p \"$7\" && echo '{}' > \"$7/summary.json\"\n";
+  fs::permissions(yade, fs::perms::owner_all);
+  Options opt;
+  opt.yade = yade.string();
+  opt.source = dir.path();
+  opt.reuse = true;
+  const CodeRuns runs(opt);
+  const fs::path config = dir.write("run.toml", "[shear_box]\nwidth = 0.2\n"), out = dir / "work" / "yade";
+
+  ASSERT_TRUE(runs.run_yade("run_shear.py", config, out));
+  ASSERT_TRUE(runs.run_yade("run_shear.py", config, out));
+  EXPECT_EQ(calls(dir), 1);
+  dir.write("yade-scripts/run_scene.py", "import colza_yade  # edited\n");  // another setup's script
+  ASSERT_TRUE(runs.run_yade("run_shear.py", config, out));
+  EXPECT_EQ(calls(dir), 1);
+  dir.write("yade-scripts/colza_yade.py", "# the module, edited\n");
+  ASSERT_TRUE(runs.run_yade("run_shear.py", config, out));
+  EXPECT_EQ(calls(dir), 2);
+  dir.write("yade-scripts/run_shear.py", "import colza_yade  # edited\n");
+  ASSERT_TRUE(runs.run_yade("run_shear.py", config, out));
+  EXPECT_EQ(calls(dir), 3);
+}
+
 TEST(CrosscheckRunStamp, ReuseTakesOnlyARunOfTheSameInputs) {
   colza::testing::ScratchDir dir;
   Options opt;
@@ -85,7 +130,7 @@ TEST(CrosscheckRunStamp, ReuseTakesOnlyARunOfTheSameInputs) {
 
   ASSERT_TRUE(runs.run_colza("oedometer", config, out));
   EXPECT_EQ(calls(dir), 1);
-  ASSERT_TRUE(read_stamp(stamp_file(out)).has_value());
+  ASSERT_TRUE(read_stamp(out).has_value());
   EXPECT_TRUE(runs.run_colza("oedometer", config, out));  // reused
   EXPECT_EQ(calls(dir), 1);
 
@@ -95,30 +140,35 @@ TEST(CrosscheckRunStamp, ReuseTakesOnlyARunOfTheSameInputs) {
   EXPECT_EQ(calls(dir), 2);
   EXPECT_TRUE(runs.run_colza("oedometer", config, out, {"integration.time_step=1e-6"}));
   EXPECT_EQ(calls(dir), 3);
-  // (A rebuilt colza is a file of its own here: programs are fingerprinted once per process.)
-  Options rebuilt = opt;
-  rebuilt.colza = dir / "fake-colza-2";
-  fs::copy_file(opt.colza, rebuilt.colza);
-  std::ofstream(rebuilt.colza, std::ios::app) << "# rebuilt\n";
-  const CodeRuns runs_of_rebuilt(rebuilt);
-  EXPECT_TRUE(runs_of_rebuilt.run_colza("oedometer", config, out, {"integration.time_step=1e-6"}));
+  std::ofstream(opt.colza, std::ios::app) << "# rebuilt\n";  // a rebuilt colza at the same path
+  EXPECT_TRUE(runs.run_colza("oedometer", config, out, {"integration.time_step=1e-6"}));
   EXPECT_EQ(calls(dir), 4);
-
+  EXPECT_TRUE(runs.run_colza("oedometer", config, out, {"integration.time_step=1e-6"}));
+  EXPECT_EQ(calls(dir), 4);
 
   // A failed run leaves neither results nor a stamp, so its folder is never reused.
   std::ofstream(dir / "fail.flag") << "";
   EXPECT_FALSE(runs.run_colza("oedometer", config, out));
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
   EXPECT_FALSE(fs::exists(stamp_file(out)));
   EXPECT_FALSE(runs.run_colza("oedometer", config, out));
   EXPECT_EQ(calls(dir), 6);
   fs::remove(dir / "fail.flag");
 
   // A finished run without a stamp (a load run by hand into the work dir) stands under
-  // --reuse, with a notice.
+  // --reuse, with a notice; so do results written into a stamped folder after its stamp,
+  // which it does not vouch for.
   ASSERT_TRUE(runs.run_colza("oedometer", config, out));
   fs::remove(stamp_file(out));
   EXPECT_TRUE(runs.run_colza("oedometer", config, out));
   EXPECT_EQ(calls(dir), 7);
+  const fs::path out_2 = dir / "work" / "colza-2";
+  ASSERT_TRUE(runs.run_colza("oedometer", config, out_2));
+  ASSERT_TRUE(read_stamp(out_2).has_value());
+  std::ofstream(out_2 / "summary.json") << "{\"by\": \"hand\"}\n";
+  EXPECT_FALSE(read_stamp(out_2).has_value());
+  EXPECT_TRUE(runs.run_colza("oedometer", config, out_2));
+  EXPECT_EQ(calls(dir), 8);
 }
 
 TEST(CrosscheckRunStamp, WithoutReuseOnlyAKeptProductStands) {
@@ -142,6 +192,9 @@ TEST(CrosscheckRunStamp, WithoutReuseOnlyAKeptProductStands) {
   fs::remove(stamp_file(sample));
   ASSERT_TRUE(runs.run_colza("shear", config, sample, {}, {}, Reuse::kIfSameInputs));
   EXPECT_EQ(calls(dir), 5);  // ... and one without a stamp (an older crosscheck's) is made again
+  crosscheck::forget_product_without(sample, "packing.txt");  // the fake writes no packing
+  ASSERT_TRUE(runs.run_colza("shear", config, sample, {}, {}, Reuse::kIfSameInputs));
+  EXPECT_EQ(calls(dir), 6);  // ... as is one that lost its packing
 }
 
 }  // namespace
