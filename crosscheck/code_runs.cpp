@@ -173,11 +173,6 @@ bool CodeRuns::run_yade(const std::string& script, const fs::path& config, const
   return run("yade", cmd, out, *stamp);
 }
 
-void forget_product_without(const fs::path& out, const std::string& file) {
-  std::error_code ec;
-  if (!fs::exists(out / file, ec)) fs::remove(stamp_file(out), ec);
-}
-
 std::vector<bool> run_in_parallel(const std::vector<std::function<bool()>>& jobs) {
   std::vector<char> ok(jobs.size(), 0);
   std::atomic<std::size_t> next{0};

@@ -59,10 +59,6 @@ class CodeRuns {
   const Options& opt_;
 };
 
-// A product kept in the work dir (Reuse::kIfSameInputs) that lost `file` (a user removed
-// the sample's packing.txt) is made again: its stamp is removed.
-void forget_product_without(const fs::path& out, const std::string& file);
-
 // How many runs run_in_parallel keeps going at once: the 2 cores of the CI machine (each run
 // is one thread: colza --threads 1, yade -j 1); more would oversubscribe a ctest -j run.
 inline constexpr std::size_t kParallelRuns = 2;

@@ -7,9 +7,10 @@
 #include <mutex>
 #include <set>
 #include <sstream>
-#include <tuple>
 #include <stdexcept>
+#include <tuple>
 #include <toml++/toml.h>
+#include "result_files.hpp"
 
 namespace crosscheck {
 
@@ -98,8 +99,8 @@ std::string run_stamp(const std::string& command, const std::vector<fs::path>& p
   }
   std::set<fs::path> seen;
   for (const fs::path& p : inputs)
-    if (seen.insert(absolute_path(p)).second)
-      stamp << "input " << absolute_path(p).string() << " " << file_fingerprint(p) << "\n";
+    if (const fs::path a = absolute_path(p); seen.insert(a).second)
+      stamp << "input " << a.string() << " " << file_fingerprint(p) << "\n";
   return stamp.str();
 }
 
@@ -107,33 +108,30 @@ fs::path stamp_file(const fs::path& out) { return out.string() + ".inputs"; }
 
 namespace {
 
-// The stamp's last line: the fingerprint of the run's summary.json (written last by both
-// codes), so that a stamp vouches only for the results it was written with.
-std::string result_line(const fs::path& out) {
-  const fs::path summary = out / "summary.json";
-  return "result " + summary.string() + " " + file_fingerprint(summary) + "\n";
+// The stamp's last lines: the fingerprints of the results it vouches for, the run's
+// summary.json (written last by both codes; throws if there is none) and, when the run wrote
+// one, its packing.txt (what a kept sample is kept for).
+std::string result_lines(const fs::path& out) {
+  std::string lines;
+  for (const fs::path& result : {out / "summary.json", out / "packing.txt"})
+    if (lines.empty() || names_a_file(result))
+      lines += "result " + result.string() + " " + file_fingerprint(result) + "\n";
+  return lines;
 }
 
 }  // namespace
 
 std::optional<std::string> read_stamp(const fs::path& out) {
-  const fs::path file = stamp_file(out);
-  std::error_code ec;
-  if (!fs::is_regular_file(file, ec)) return std::nullopt;
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  std::string stamp = text.str();
   try {
-    const std::string result = result_line(out);
-    if (stamp.size() < result.size() || stamp.compare(stamp.size() - result.size(), result.size(), result) != 0)
+    std::string stamp = read_text(stamp_file(out));
+    const std::string results = result_lines(out);
+    if (stamp.size() < results.size() || stamp.compare(stamp.size() - results.size(), results.size(), results) != 0)
       return std::nullopt;  // other results than those the stamp was written with
-    stamp.resize(stamp.size() - result.size());
+    stamp.resize(stamp.size() - results.size());
+    return stamp;
   } catch (const std::exception&) {
-    return std::nullopt;  // no summary.json
+    return std::nullopt;  // no stamp, or no summary.json
   }
-  return stamp;
 }
 
 void write_stamp(const fs::path& out, const std::string& stamp) {
@@ -141,7 +139,7 @@ void write_stamp(const fs::path& out, const std::string& stamp) {
   const fs::path partial = file.string() + ".partial";
   {
     std::ofstream o(partial, std::ios::binary | std::ios::trunc);
-    o << stamp << result_line(out);
+    o << stamp << result_lines(out);
     o.flush();
     if (!o) throw std::runtime_error("cannot write " + partial.string());
   }

@@ -49,21 +49,21 @@ std::vector<double> loads_to_run(const CheckContext& ctx, const ShearSetting& s,
 // The sample's packing file, made by colza (the load of this run is cut short: it only makes
 // packing.txt) and kept in the work dir for the next cross-check while the scene and colza
 // stay the same (Reuse::kIfSameInputs); nothing (and a failed row) if colza could not make it.
-// The run's normal stress is the table's first load whatever --loads says: the sample does
-// not depend on it (packing.txt is written before the load), and another value would be
-// another stamp, so the sample would be made again.
+// The run's normal stress is the table's first load whatever --loads says (`loads[0]` only
+// when the table has none): the sample does not depend on it (packing.txt is written before
+// the load), and another value would be another stamp, so the sample would be made again.
 std::optional<fs::path> shear_sample(const CheckContext& ctx, const ShearSetting& s, Report& report,
-                                     double first_load) {
+                                     const std::vector<double>& loads) {
+  double sample_load = loads.at(0);
   if (const auto* table_loads = s.t.at_path("loads").as_array(); table_loads && !table_loads->empty())
-    first_load = table_loads->get(0)->value<double>().value_or(first_load);
+    sample_load = table_loads->get(0)->value<double>().value_or(sample_load);
   const fs::path prep = s.work / "sample";
-  forget_product_without(prep, "packing.txt");
   std::printf("crosscheck: %s: the sample (colza: generation, settling, cut)...\n", s.label.c_str());
   std::fflush(stdout);
   if (!ctx.runs.run_colza("shear", s.scene, prep,
                           {"shear_box.consolidation_max_time=1e-9", "shear_box.strength_window_start=0",
                            "shear_box.strength_window_end=1e-9", "shear_box.shear_displacement=1e-9"},
-                          normal_stress_argument(first_load), Reuse::kIfSameInputs)) {
+                          normal_stress_argument(sample_load), Reuse::kIfSameInputs)) {
     report.fail(s.label, "colza could not make the sample");
     return std::nullopt;
   }
@@ -197,7 +197,7 @@ void check_shear(const CheckContext& ctx, Report& report, const std::string& siz
   const std::vector<double> loads = loads_to_run(ctx, s, report);
   if (loads.empty()) return;
   // 1. The sample.
-  const std::optional<fs::path> packing = shear_sample(ctx, s, report, loads[0]);
+  const std::optional<fs::path> packing = shear_sample(ctx, s, report, loads);
   if (!packing) return;
   box->insert_or_assign("packing_file", packing->string());
   // The tolerances table may shorten the shearing (a YADE load of the full box to 30 mm

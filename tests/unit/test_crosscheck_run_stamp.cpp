@@ -25,8 +25,8 @@ using crosscheck::read_stamp;
 using crosscheck::run_stamp;
 using crosscheck::stamp_file;
 
-// A fake colza: writes <--out>/summary.json and a line to calls.txt beside itself; exits 1
-// when fail.flag exists beside it.
+// A fake colza: writes <--out>/summary.json and packing.txt and a line to calls.txt beside
+// itself; exits 1 when fail.flag exists beside it.
 fs::path write_fake_colza(const colza::testing::ScratchDir& dir) {
   const fs::path exe = dir / "fake-colza";
   std::ofstream(exe) << "#!/bin/sh\n"
@@ -34,7 +34,9 @@ fs::path write_fake_colza(const colza::testing::ScratchDir& dir) {
                         "echo \"$*\" >> \"$here/calls.txt\"\n"
                         "[ -e \"$here/fail.flag\" ] && exit 1\n"
                         "while [ $# -gt 0 ]; do\n"
-                        "  if [ \"$1\" = --out ]; then mkdir -p \"$2\" && echo '{}' > \"$2/summary.json\"; fi\n"
+                        "  if [ \"$1\" = --out ]; then\n"
+                        "    mkdir -p \"$2\" && echo '{}' > \"$2/summary.json\" && echo '0 0 0 1' > \"$2/packing.txt\"\n"
+                        "  fi\n"
                         "  shift\n"
                         "done\n";
   fs::permissions(exe, fs::perms::owner_all);
@@ -192,7 +194,7 @@ TEST(CrosscheckRunStamp, WithoutReuseOnlyAKeptProductStands) {
   fs::remove(stamp_file(sample));
   ASSERT_TRUE(runs.run_colza("shear", config, sample, {}, {}, Reuse::kIfSameInputs));
   EXPECT_EQ(calls(dir), 5);  // ... and one without a stamp (an older crosscheck's) is made again
-  crosscheck::forget_product_without(sample, "packing.txt");  // the fake writes no packing
+  fs::remove(sample / "packing.txt");
   ASSERT_TRUE(runs.run_colza("shear", config, sample, {}, {}, Reuse::kIfSameInputs));
   EXPECT_EQ(calls(dir), 6);  // ... as is one that lost its packing
 }
