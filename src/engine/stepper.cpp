@@ -315,6 +315,11 @@ void Stepper::compute_forces(World& world) {
   events_.bonds_broken_shear += totals.broken_shear;
 }
 
+void Stepper::rebuild_neighbours(World& world) {
+  neighbours_.invalidate();
+  neighbours_.rebuild(world.particles, world.walls, world.contacts, worker_threads());
+}
+
 void Stepper::begin_step(World& world) {
   throw_if_interrupted();  // Ctrl-C or SIGTERM: unwind between steps (core/interrupt.hpp)
   if (physics_.time_step.automatic && physics_.time_step.recompute_interval > 0 &&

@@ -73,7 +73,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
     r.settling.converged = true;
     stepper.prepare(world);
   }
-  if (c.contact.bond_install == BondInstallMoment::kAfterSettling) r.bonds_installed = install_bonds(world, c.contact.bond_gap);
+  if (c.contact.bond_install == BondInstallMoment::kAfterSettling) r.bonds_installed = install_bonds(world, stepper, c.contact.bond_gap);
   discard_above(world, stepper, o.cylinder_height);
   if (o.packing_file.empty()) store_in_space_order(world, stepper);
   r.particles = world.particles.size();
@@ -90,7 +90,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   r.bulk_density = total_mass(world.particles) / (area * top);
   const std::size_t piston_id = add_oedometer_piston(world, o, top);
   stepper.prepare(world);
-  if (c.contact.bond_install == BondInstallMoment::kBeforeLoading) r.bonds_installed = install_bonds(world, c.contact.bond_gap);
+  if (c.contact.bond_install == BondInstallMoment::kBeforeLoading) r.bonds_installed = install_bonds(world, stepper, c.contact.bond_gap);
   r.settled = world.particles;
 
   // --- loading ----------------------------------------------------------------------

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 
 #include "neighbour/spatial_order.hpp"
 
@@ -85,7 +87,14 @@ SettleResult settle_generated_sample(World& world, Stepper& stepper, const Sampl
                 static_cast<std::uint64_t>(sample.settle_check_interval), progress);
 }
 
-std::size_t install_bonds(World& world, double gap) {
+std::size_t install_bonds(World& world, Stepper& stepper, double gap) {
+  if (!(gap < stepper.physics().skin))
+    throw std::invalid_argument("bond gap " + std::to_string(gap) + " m is not below the Verlet skin " +
+                                std::to_string(stepper.physics().skin) + " m");
+  // A pair that was not a candidate at the last build may have closed by up to the skin since
+  // (each sphere moves less than skin/2 between builds): only a fresh list holds every pair
+  // whose gap is below the skin.
+  stepper.rebuild_neighbours(world);
   const ParticleArrays& p = world.particles;
   auto& pairs = world.contacts.particle_pairs;
   std::size_t installed = 0;

@@ -37,8 +37,13 @@ std::size_t discard_above(World& world, Stepper& stepper, double z_top);
 // after the discard; a packing read from a file keeps the file's order.
 void store_in_space_order(World& world, Stepper& stepper);
 
-// Puts a contact bond on every particle-particle pair touching now (un >= -gap).
-// Returns the number of bonds installed.
-std::size_t install_bonds(World& world, double gap);
+// Puts a contact bond on every particle-particle pair touching now (un >= -gap, m).
+// Returns the number of bonds installed. The candidate lists are rebuilt first, so every pair
+// with a gap below the stepper's Verlet skin is a candidate; a gap of the skin or wider
+// cannot be honoured and throws std::invalid_argument (the config check refuses
+// contact.bond_gap >= integration.verlet_skin before a run starts). Rebuilding the lists
+// changes no result: forces are summed in pair order and a candidate that is not touching
+// carries no force, so which pairs are candidates never shows in the physics.
+std::size_t install_bonds(World& world, Stepper& stepper, double gap);
 
 }  // namespace colza

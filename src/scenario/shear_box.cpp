@@ -128,7 +128,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
   world.walls.push_back(Wall::rectangle("plate", Vec3(b.length / 2, b.width / 2, top), -Vec3::UnitZ(), Vec3::UnitX(),
                                         b.length / 2, b.width / 2));
   stepper.prepare(world);
-  if (c.contact.bond_install == BondInstallMoment::kAfterSettling) r.bonds_installed = install_bonds(world, c.contact.bond_gap);
+  if (c.contact.bond_install == BondInstallMoment::kAfterSettling) r.bonds_installed = install_bonds(world, stepper, c.contact.bond_gap);
 
   PlateServo servo{normal_stress * area, b.servo_relaxation, b.servo_max_speed};
   const double plate_kn = stepper.pairs().particle_wall(0, world.walls[ids.plate].material).kn;
@@ -173,7 +173,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
   r.consolidation_time = world.time - t0;
   consolidation_clock.count_steps(steps, world.particles.size());
   r.stages.push_back(consolidation_clock.finish());
-  if (c.contact.bond_install == BondInstallMoment::kBeforeLoading) r.bonds_installed = install_bonds(world, c.contact.bond_gap);
+  if (c.contact.bond_install == BondInstallMoment::kBeforeLoading) r.bonds_installed = install_bonds(world, stepper, c.contact.bond_gap);
 
   // --- shearing ---------------------------------------------------------------------
   StageClock shear_clock("shearing");

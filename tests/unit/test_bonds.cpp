@@ -62,7 +62,7 @@ TEST(Bonds, TensionBreakAtCnUnderPrescribedPull) {
   w.particles.fixed[0] = w.particles.fixed[1] = 1;
   Stepper st(bond_settings(cn, 100.0, 0.3, dt, BondInstallMoment::kBeforeLoading));
   st.prepare(w);
-  ASSERT_EQ(install_bonds(w, 0.0), 1u);
+  ASSERT_EQ(install_bonds(w, st, 0.0), 1u);
 
   double max_tension = 0.0, last_fn = 0.0;
   long break_step = -1;
@@ -120,7 +120,7 @@ TEST(Bonds, ShearBreakAtCsThenFrictionalContact) {
   w.particles.fixed[0] = w.particles.fixed[1] = 1;
   Stepper st(bond_settings(100.0, cs, mu, dt, BondInstallMoment::kBeforeLoading));
   st.prepare(w);
-  ASSERT_EQ(install_bonds(w, 0.0), 1u);
+  ASSERT_EQ(install_bonds(w, st, 0.0), 1u);
 
   long break_step = -1;
   bool exceeded_friction_while_bonded = false;

@@ -85,6 +85,23 @@ TEST(ConfigValidation, OtherRangeAndChoiceErrors) {
   EXPECT_NE(e.reason().find("line 2"), std::string::npos) << e.reason();
 }
 
+TEST(ConfigValidation, BondGapMustBeBelowTheSkin) {
+  // Bonds are put on candidate pairs, and only pairs closer than the Verlet skin are sure to
+  // be candidates (install_bonds, scenario/settling.hpp).
+  const ConfigError e = oedometer_error(
+      "[contact]\nbond = \"contact_bond\"\nbond_gap = 0.0005\n[integration]\nverlet_skin = 0.0005\n");
+  EXPECT_EQ(e.key(), "contact.bond_gap");
+  EXPECT_NE(e.reason().find("integration.verlet_skin"), std::string::npos) << e.reason();
+  // Below the skin it stands; without bonds, or with bonds formed on new contacts (no gap
+  // is used), any gap stands.
+  const auto reads = [](const std::string& toml) {
+    return read_run_config(Scenario::kOedometer, ConfigReader::from_string(toml, "test.toml"));
+  };
+  EXPECT_NO_THROW(reads("[contact]\nbond = \"contact_bond\"\nbond_gap = 0.0004\n"));
+  EXPECT_NO_THROW(reads("[contact]\nbond = \"none\"\nbond_gap = 0.001\n"));
+  EXPECT_NO_THROW(reads("[contact]\nbond = \"contact_bond\"\nbond_install = \"on_new_contacts\"\nbond_gap = 0.001\n"));
+}
+
 TEST(ConfigValidation, MissingPackingFileOfASceneIsNamed) {
   const colza::testing::ScratchDir dir;
   const std::string cfg = dir.write("scene.toml",

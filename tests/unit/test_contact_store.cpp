@@ -143,18 +143,58 @@ TEST(InstallBonds, BondsTouchingPairsWithinGap) {
   // gap 0: only the overlapping pair.
   {
     World w0 = w;
-    EXPECT_EQ(install_bonds(w0, 0.0), 1u);
+    EXPECT_EQ(install_bonds(w0, st, 0.0), 1u);
     EXPECT_EQ(w0.contacts.bonded_contacts(), 1u);
     EXPECT_EQ(w0.contacts.particle_pairs.history[0].bonded, 1);
     EXPECT_EQ(w0.contacts.particle_pairs.history[1].bonded, 0);
     // Installing again adds nothing.
-    EXPECT_EQ(install_bonds(w0, 0.0), 0u);
+    EXPECT_EQ(install_bonds(w0, st, 0.0), 0u);
   }
   // gap 3 um >= 2 um: both; the gapped pair becomes a touching bonded contact with n = +x.
-  EXPECT_EQ(install_bonds(w, 3e-6), 2u);
+  EXPECT_EQ(install_bonds(w, st, 3e-6), 2u);
   EXPECT_EQ(w.contacts.particle_pairs.history[1].touching, 1);
   EXPECT_EQ(w.contacts.particle_pairs.history[1].bonded, 1);
   EXPECT_NEAR((w.contacts.particle_pairs.history[1].normal - Vec3::UnitX()).norm(), 0.0, 1e-15);
+}
+
+TEST(InstallBonds, FindsPairsThatCameWithinTheGapSinceTheLastNeighbourBuild) {
+  // Two spheres R = 1 mm, 0.6 mm apart when the candidate list is built (skin 0.5 mm: not a
+  // candidate). Sphere 1 then moves 0.2 mm closer, less than skin/2, so no step would rebuild
+  // the list: the pair, now 0.4 mm apart, is within a bond gap of 0.45 mm but not a candidate.
+  // Bonds are installed from a fresh list, so it is bonded all the same (before the fix it
+  // was missed: which pairs got bonds depended on the skin and on when the list was built).
+  PhysicsSettings ph;
+  ph.particle_materials = {{"seed", 1000.0, 1e5, 1e5, 0.3}};
+  ph.integrator.gravity = Vec3::Zero();
+  ph.time_step.automatic = false;
+  ph.time_step.fixed_dt = 1e-7;
+  ph.skin = 0.5e-3;
+  const double R = 1e-3;
+  World w;
+  w.particles.add(Vec3(0, 0, 0), R, 1000.0);
+  w.particles.add(Vec3(2 * R + 0.6e-3, 0, 0), R, 1000.0);
+  Stepper st(ph);
+  st.prepare(w);
+  ASSERT_EQ(w.contacts.particle_pairs.size(), 0u);
+  w.particles.position[1].x() -= 0.2e-3;
+  ASSERT_FALSE(st.neighbours().needs_rebuild(w.particles, w.walls));
+  EXPECT_EQ(install_bonds(w, st, 0.45e-3), 1u);
+  ASSERT_EQ(w.contacts.particle_pairs.size(), 1u);
+  EXPECT_EQ(w.contacts.particle_pairs.history[0].bonded, 1);
+  EXPECT_EQ(w.contacts.particle_pairs.history[0].touching, 1);
+}
+
+TEST(InstallBonds, RefusesAGapAsWideAsTheSkin) {
+  // A pair as far apart as the skin may not be a candidate even in a fresh list, so such a
+  // gap cannot be honoured (the config check names contact.bond_gap before a run starts).
+  PhysicsSettings ph;
+  ph.particle_materials = {{"seed", 1000.0, 1e5, 1e5, 0.3}};
+  ph.skin = 0.5e-3;
+  World w;
+  w.particles.add(Vec3(0, 0, 0), 1e-3, 1000.0);
+  Stepper st(ph);
+  st.prepare(w);
+  EXPECT_THROW(install_bonds(w, st, 0.5e-3), std::invalid_argument);
 }
 
 TEST(DiscardAbove, RemovesSpheresAndTheirContacts) {
@@ -170,7 +210,7 @@ TEST(DiscardAbove, RemovesSpheresAndTheirContacts) {
   for (int i = 0; i < 3; ++i) w.particles.add(Vec3(0, 0, R + i * (2 * R - 1e-6)), R, 1000.0);
   Stepper st(ph);
   st.prepare(w);
-  install_bonds(w, 0.0);
+  install_bonds(w, st, 0.0);
   ASSERT_EQ(w.contacts.bonded_contacts(), 2u);
   EXPECT_EQ(discard_above(w, st, 4.5e-3), 1u);
   EXPECT_EQ(w.particles.size(), 2u);

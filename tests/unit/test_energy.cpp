@@ -163,7 +163,7 @@ EnergyRun run_energy(World& w, Stepper& st, long steps, bool install = false) {
   EnergyRun r;
   const Vec3 g = st.physics().integrator.gravity;
   st.prepare(w);
-  if (install) install_bonds(w, 0.0);
+  if (install) install_bonds(w, st, 0.0);
   SlipAudit audit;
   for (long n = 0; n < steps; ++n) {
     st.step(w, [&](const World& s) {
