@@ -8,10 +8,13 @@
 // above the threaded path's threshold of 2048) with friction sliding, contacts forming and separating, bonds
 // holding and breaking, runs 300 steps on each path (also with a wide Verlet skin, where most
 // candidate pairs are apart); positions, velocities, spins and contact histories must be
-// identical to the last bit.
+// identical to the last bit. So must runs whose candidate lists differ (another skin, extra
+// rebuilds): which pairs are candidates never shows in a result.
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <map>
+#include <utility>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -35,6 +38,7 @@ struct Setup {
   bool walls_only_between_halves = false;  // no integration sums; motion may go into the threaded force loop
   bool shaped_walls = false;  // a cylinder and a rectangle (face, edge and corner contacts) besides planes
   double skin = 0.3e-3;       // m; 2.5 mm makes the diagonal lattice neighbours candidates that stay apart
+  int rebuild_every = 0;      // > 0: also rebuild the candidate lists every this many steps
 };
 
 World make_world(const Setup& setup) {
@@ -121,6 +125,7 @@ PathRun run_path(const Setup& setup, int threads) {
     stepper.set_between_halves(Stepper::BetweenHalves::kWallsOnly);
   }
   for (int s = 0; s < 300; ++s) {
+    if (setup.rebuild_every > 0 && s % setup.rebuild_every == 0) stepper.rebuild_neighbours(r.world);
     stepper.step(r.world);
     r.max_pairs = std::max(r.max_pairs, r.world.contacts.particle_pairs.size());
   }
@@ -167,6 +172,39 @@ void expect_same_state(const World& a, const World& b) {
   for (std::size_t w = 0; w < a.walls.size(); ++w) {
     EXPECT_EQ(std::memcmp(a.walls[w].force.data(), b.walls[w].force.data(), sizeof(Vec3)), 0) << "wall " << w;
     EXPECT_EQ(a.walls[w].contact_count, b.walls[w].contact_count) << "wall " << w;
+  }
+}
+
+// The touching contacts of a and b, matched by their bodies (a particle pair, or a wall and a
+// particle): lists built with another skin or at other moments hold other candidates, but
+// must hold the same contacts with the same histories to the last bit.
+void expect_same_contacts(const World& a, const World& b) {
+  const auto particle_contacts = [](const World& w) {
+    std::map<std::pair<Index, Index>, const ContactHistory*> m;
+    const auto& pp = w.contacts.particle_pairs;
+    for (std::size_t c = 0; c < pp.size(); ++c)
+      if (pp.history[c].touching) m[{pp.first[c], pp.second[c]}] = &pp.history[c];
+    return m;
+  };
+  const auto wall_contacts = [](const World& w) {
+    std::map<std::pair<Index, Index>, const ContactHistory*> m;
+    const auto& pw = w.contacts.wall_pairs;
+    for (std::size_t c = 0; c < pw.size(); ++c)
+      if (pw.history[c].touching) m[{pw.wall[c], pw.particle[c]}] = &pw.history[c];
+    return m;
+  };
+  for (const auto& [ma, mb] : {std::pair{particle_contacts(a), particle_contacts(b)},
+                               std::pair{wall_contacts(a), wall_contacts(b)}}) {
+    ASSERT_EQ(ma.size(), mb.size());
+    for (const auto& [key, ha] : ma) {
+      const auto it = mb.find(key);
+      ASSERT_NE(it, mb.end()) << "contact " << key.first << "-" << key.second;
+      const ContactHistory* hb = it->second;
+      ASSERT_EQ(std::memcmp(ha->shear_force.data(), hb->shear_force.data(), sizeof(Vec3)), 0);
+      ASSERT_EQ(std::memcmp(ha->normal.data(), hb->normal.data(), sizeof(Vec3)), 0);
+      ASSERT_EQ(std::memcmp(&ha->normal_force, &hb->normal_force, sizeof(double)), 0);
+      ASSERT_EQ(ha->bonded, hb->bonded);
+    }
   }
 }
 
@@ -219,6 +257,30 @@ TEST(ForcePaths, CandidatesApartGiveTheSameBitsOnEveryPath) {
   expect_same_state(batched.world, two.world);
   expect_same_pair_energies(batched.ledger, two.ledger);
 #endif
+}
+
+// Which pairs are candidates, and when the lists are built, never shows in a result: forces
+// are summed in pair order, a candidate that is not touching carries no force, and a
+// contact's history is carried across rebuilds. install_bonds (scenario/settling.hpp) relies
+// on this when it rebuilds the lists before bonding; the skin is then a speed setting only.
+TEST(ForcePaths, TheSkinAndTheMomentOfRebuildsChangeNoResult) {
+  const PathRun narrow = run_path({.particle_materials = 1, .bonds = true, .skin = 0.3e-3}, 1);
+  const PathRun wide = run_path({.particle_materials = 1, .bonds = true, .skin = 2.5e-3}, 1);
+  const PathRun rebuilt = run_path({.particle_materials = 1, .bonds = true, .skin = 0.3e-3, .rebuild_every = 7}, 1);
+  ASSERT_GT(narrow.world.contacts.touching_particle_contacts(), 1000u);
+  ASSERT_GT(wide.max_pairs, narrow.max_pairs);  // other candidate lists
+  ASSERT_GT(narrow.broken_tension + narrow.broken_shear, 0u);  // bonds broke on the way
+  for (const PathRun* other : {&wide, &rebuilt}) {
+    EXPECT_TRUE(same_bits(narrow.world.particles.position, other->world.particles.position));
+    EXPECT_TRUE(same_bits(narrow.world.particles.velocity, other->world.particles.velocity));
+    EXPECT_TRUE(same_bits(narrow.world.particles.angular_velocity, other->world.particles.angular_velocity));
+    EXPECT_TRUE(same_bits(narrow.world.particles.force, other->world.particles.force));
+    EXPECT_TRUE(same_bits(narrow.world.particles.torque, other->world.particles.torque));
+    expect_same_contacts(narrow.world, other->world);
+    EXPECT_EQ(narrow.broken_tension, other->broken_tension);
+    EXPECT_EQ(narrow.broken_shear, other->broken_shear);
+    expect_same_pair_energies(narrow.ledger, other->ledger);
+  }
 }
 
 // The batched wall kernel (engine/wall_batch.hpp) on every wall shape: a rectangle's face,
