@@ -44,7 +44,8 @@ class Stepper {
   // Call after particles were added, removed or reordered, or walls added.
   void invalidate_neighbours() { neighbours_.invalidate(); }
   // Builds the candidate lists now: afterwards every pair closer than the skin is a candidate
-  // (install_bonds needs that). No result depends on when the lists are built.
+  // (install_bonds needs that). No result depends on when the lists are built (except near a
+  // finite cylinder's ends: ARCHITECTURE.md, Performance).
   void rebuild_neighbours(World& world);
   void update_time_step(World& world);
   // Stored plus dissipated energies: constant (up to O(dt^2)) when the bookkeeping is complete.
@@ -77,7 +78,6 @@ class Stepper {
   std::uint64_t threaded_force_steps() const { return threaded_force_steps_; }
   // Steps whose motion was done inside the threaded force loop (set_between_halves); for tests.
   std::uint64_t motion_with_forces_steps() const { return motion_with_forces_steps_; }
-  void rebuild_neighbours_now(World& world) { neighbours_.rebuild(world.particles, world.walls, world.contacts); }
 
  private:
   void compute_forces(World& world);

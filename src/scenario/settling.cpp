@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <stdexcept>
-#include <string>
 
 #include "neighbour/spatial_order.hpp"
 
@@ -88,9 +88,11 @@ SettleResult settle_generated_sample(World& world, Stepper& stepper, const Sampl
 }
 
 std::size_t install_bonds(World& world, Stepper& stepper, double gap) {
-  if (!(gap < stepper.physics().skin))
-    throw std::invalid_argument("bond gap " + std::to_string(gap) + " m is not below the Verlet skin " +
-                                std::to_string(stepper.physics().skin) + " m");
+  if (!(gap < stepper.physics().skin)) {
+    std::ostringstream why;
+    why << "bond gap " << gap << " m is not below the Verlet skin " << stepper.physics().skin << " m";
+    throw std::invalid_argument(why.str());
+  }
   // A pair that was not a candidate at the last build may have closed by up to the skin since
   // (each sphere moves less than skin/2 between builds): only a fresh list holds every pair
   // whose gap is below the skin.
