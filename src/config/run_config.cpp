@@ -270,9 +270,7 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
   c.integration = read_integration(root.table("integration"));
   // Bonds join the candidate pairs within bond_gap, and only pairs closer than the Verlet skin
   // are candidates (scenario/settling.hpp install_bonds).
-  const bool installs_bonds = c.contact.bond_install == BondInstallMoment::kAfterSettling ||
-                              c.contact.bond_install == BondInstallMoment::kBeforeLoading;
-  if (installs_bonds && c.contact.bond_gap >= c.integration.verlet_skin)
+  if (installs_bonds_at_a_moment(c.contact.bond_install) && c.contact.bond_gap >= c.integration.verlet_skin)
     contact.fail("bond_gap", "must be below integration.verlet_skin: bonds are put on candidate pairs, and only "
                              "pairs closer than the skin are sure to be candidates");
   if (scenario == Scenario::kOedometer) {

@@ -69,6 +69,11 @@ enum class BondInstallMoment {
   kOnNewContacts,   // every particle-particle contact is bonded the step it forms
 };
 const char* to_string(BondInstallMoment moment);
+// Whether bonds are put on the contacts present at one moment (install_bonds,
+// scenario/settling.hpp), rather than never or as contacts form.
+inline bool installs_bonds_at_a_moment(BondInstallMoment m) {
+  return m == BondInstallMoment::kAfterSettling || m == BondInstallMoment::kBeforeLoading;
+}
 
 struct NoBond {
   static constexpr const char* kName = "none";

@@ -51,9 +51,7 @@ SceneResult run_scene(const RunConfig& c, Progress& progress) {
   }
   world.walls = s.walls;
   stepper.prepare(world);
-  if (c.contact.bond_install == BondInstallMoment::kAfterSettling ||
-      c.contact.bond_install == BondInstallMoment::kBeforeLoading)
-    r.bonds_installed = install_bonds(world, stepper, c.contact.bond_gap);
+  if (installs_bonds_at_a_moment(c.contact.bond_install)) r.bonds_installed = install_bonds(world, stepper, c.contact.bond_gap);
   r.dt = world.dt;
   r.series = scene_table(s.record_particles, world.walls.size());
 

@@ -27,6 +27,18 @@ void set_pairs(ParticlePairList& l, std::vector<Index> a, std::vector<Index> b, 
   l.history = std::move(h);
 }
 
+// One seed material, no gravity, a fixed dt, the given Verlet skin (m): spheres that stay
+// where they are put unless a test moves them.
+PhysicsSettings resting_spheres(double skin) {
+  PhysicsSettings ph;
+  ph.particle_materials = {{"seed", 1000.0, 1e5, 1e5, 0.3}};
+  ph.integrator.gravity = Vec3::Zero();
+  ph.time_step.automatic = false;
+  ph.time_step.fixed_dt = 1e-7;
+  ph.skin = skin;
+  return ph;
+}
+
 bool same(const ContactHistory& a, const ContactHistory& b) {
   return a.shear_force == b.shear_force && a.normal == b.normal && a.normal_force == b.normal_force &&
          a.touching == b.touching && a.bonded == b.bonded;
@@ -126,12 +138,7 @@ TEST(ContactStore, RenumberPermutationSwapsBodiesAndFlipsVectors) {
 
 TEST(InstallBonds, BondsTouchingPairsWithinGap) {
   // Three spheres R = 1 mm on the x axis: 0-1 overlap 1 um, 1-2 gap 2 um, 0-2 far apart.
-  PhysicsSettings ph;
-  ph.particle_materials = {{"seed", 1000.0, 1e5, 1e5, 0.3}};
-  ph.integrator.gravity = Vec3::Zero();
-  ph.time_step.automatic = false;
-  ph.time_step.fixed_dt = 1e-7;
-  ph.skin = 1e-4;
+  const PhysicsSettings ph = resting_spheres(1e-4);
   const double R = 1e-3;
   World w;
   w.particles.add(Vec3(0, 0, 0), R, 1000.0);
@@ -163,12 +170,7 @@ TEST(InstallBonds, FindsPairsThatCameWithinTheGapSinceTheLastNeighbourBuild) {
   // the list: the pair, now 0.4 mm apart, is within a bond gap of 0.45 mm but not a candidate.
   // Bonds are installed from a fresh list, so it is bonded all the same (before the fix it
   // was missed: which pairs got bonds depended on the skin and on when the list was built).
-  PhysicsSettings ph;
-  ph.particle_materials = {{"seed", 1000.0, 1e5, 1e5, 0.3}};
-  ph.integrator.gravity = Vec3::Zero();
-  ph.time_step.automatic = false;
-  ph.time_step.fixed_dt = 1e-7;
-  ph.skin = 0.5e-3;
+  const PhysicsSettings ph = resting_spheres(0.5e-3);
   const double R = 1e-3;
   World w;
   w.particles.add(Vec3(0, 0, 0), R, 1000.0);
@@ -187,12 +189,9 @@ TEST(InstallBonds, FindsPairsThatCameWithinTheGapSinceTheLastNeighbourBuild) {
 TEST(InstallBonds, RefusesAGapAsWideAsTheSkin) {
   // A pair as far apart as the skin may not be a candidate even in a fresh list, so such a
   // gap cannot be honoured (the config check names contact.bond_gap before a run starts).
-  PhysicsSettings ph;
-  ph.particle_materials = {{"seed", 1000.0, 1e5, 1e5, 0.3}};
-  ph.skin = 0.5e-3;
   World w;
   w.particles.add(Vec3(0, 0, 0), 1e-3, 1000.0);
-  Stepper st(ph);
+  Stepper st(resting_spheres(0.5e-3));
   st.prepare(w);
   EXPECT_THROW(install_bonds(w, st, 0.5e-3), std::invalid_argument);
 }

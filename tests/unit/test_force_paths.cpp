@@ -145,12 +145,17 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
-void expect_same_state(const World& a, const World& b) {
+// Positions, velocities, spins, forces and torques, to the last bit.
+void expect_same_particles(const World& a, const World& b) {
   EXPECT_TRUE(same_bits(a.particles.position, b.particles.position));
   EXPECT_TRUE(same_bits(a.particles.velocity, b.particles.velocity));
   EXPECT_TRUE(same_bits(a.particles.angular_velocity, b.particles.angular_velocity));
   EXPECT_TRUE(same_bits(a.particles.force, b.particles.force));
   EXPECT_TRUE(same_bits(a.particles.torque, b.particles.torque));
+}
+
+void expect_same_state(const World& a, const World& b) {
+  expect_same_particles(a, b);
   const auto& ha = a.contacts.particle_pairs.history;
   const auto& hb = b.contacts.particle_pairs.history;
   ASSERT_EQ(ha.size(), hb.size());
@@ -179,19 +184,21 @@ void expect_same_state(const World& a, const World& b) {
 // particle): lists built with another skin or at other moments hold other candidates, but
 // must hold the same contacts with the same histories to the last bit.
 void expect_same_contacts(const World& a, const World& b) {
-  const auto particle_contacts = [](const World& w) {
+  // Touching entries of a pair list (keys: first and second body, or wall and particle).
+  const auto touching_by_key = [](const std::vector<Index>& key_1, const std::vector<Index>& key_2,
+                                  const std::vector<ContactHistory>& history) {
     std::map<std::pair<Index, Index>, const ContactHistory*> m;
-    const auto& pp = w.contacts.particle_pairs;
-    for (std::size_t c = 0; c < pp.size(); ++c)
-      if (pp.history[c].touching) m[{pp.first[c], pp.second[c]}] = &pp.history[c];
+    for (std::size_t c = 0; c < history.size(); ++c)
+      if (history[c].touching) m[{key_1[c], key_2[c]}] = &history[c];
     return m;
   };
-  const auto wall_contacts = [](const World& w) {
-    std::map<std::pair<Index, Index>, const ContactHistory*> m;
+  const auto particle_contacts = [&](const World& w) {
+    const auto& pp = w.contacts.particle_pairs;
+    return touching_by_key(pp.first, pp.second, pp.history);
+  };
+  const auto wall_contacts = [&](const World& w) {
     const auto& pw = w.contacts.wall_pairs;
-    for (std::size_t c = 0; c < pw.size(); ++c)
-      if (pw.history[c].touching) m[{pw.wall[c], pw.particle[c]}] = &pw.history[c];
-    return m;
+    return touching_by_key(pw.wall, pw.particle, pw.history);
   };
   for (const auto& [ma, mb] : {std::pair{particle_contacts(a), particle_contacts(b)},
                                std::pair{wall_contacts(a), wall_contacts(b)}}) {
@@ -271,11 +278,7 @@ TEST(ForcePaths, TheSkinAndTheMomentOfRebuildsChangeNoResult) {
   ASSERT_GT(wide.max_pairs, narrow.max_pairs);  // other candidate lists
   ASSERT_GT(narrow.broken_tension + narrow.broken_shear, 0u);  // bonds broke on the way
   for (const PathRun* other : {&wide, &rebuilt}) {
-    EXPECT_TRUE(same_bits(narrow.world.particles.position, other->world.particles.position));
-    EXPECT_TRUE(same_bits(narrow.world.particles.velocity, other->world.particles.velocity));
-    EXPECT_TRUE(same_bits(narrow.world.particles.angular_velocity, other->world.particles.angular_velocity));
-    EXPECT_TRUE(same_bits(narrow.world.particles.force, other->world.particles.force));
-    EXPECT_TRUE(same_bits(narrow.world.particles.torque, other->world.particles.torque));
+    expect_same_particles(narrow.world, other->world);
     expect_same_contacts(narrow.world, other->world);
     EXPECT_EQ(narrow.broken_tension, other->broken_tension);
     EXPECT_EQ(narrow.broken_shear, other->broken_shear);
