@@ -44,8 +44,7 @@ class Stepper {
   // Call after particles were added, removed or reordered, or walls added.
   void invalidate_neighbours() { neighbours_.invalidate(); }
   // Builds the candidate lists now: afterwards every pair closer than the skin is a candidate
-  // (install_bonds needs that). No result depends on when the lists are built (except near a
-  // finite cylinder's ends: ARCHITECTURE.md, Performance).
+  // (install_bonds needs that). No result depends on when the lists are built.
   void rebuild_neighbours(World& world);
   void update_time_step(World& world);
   // Stored plus dissipated energies: constant (up to O(dt^2)) when the bookkeeping is complete.

@@ -5,6 +5,25 @@
 
 namespace colza {
 
+namespace {
+
+// The wall as the candidate test sees it. A finite cylinder reaches one skin beyond each of
+// its ends: between two builds the sphere and the wall each move less than skin/2, so the
+// sphere's axial coordinate (measured from the wall's origin) changes by less than a skin,
+// and a sphere just beyond an end at the build may be within the range, and touching,
+// before the next build. Planes and rectangles need no widening: their gap is a distance to
+// the whole surface, edges and corners included, so it closes by less than a skin.
+Wall candidate_reach(const Wall& wall, double skin) {
+  Wall reach = wall;
+  if (reach.shape == WallShape::kCylinder) {
+    reach.axial_min -= skin;
+    reach.axial_max += skin;
+  }
+  return reach;
+}
+
+}  // namespace
+
 bool NeighbourSearch::needs_rebuild(const ParticleArrays& particles, const std::vector<Wall>& walls) const {
   if (!valid_ || position_at_build_.size() != particles.size() || wall_origin_at_build_.size() != walls.size())
     return true;
@@ -151,14 +170,16 @@ void NeighbourSearch::rebuild(const ParticleArrays& particles, const std::vector
   contacts.adopt_particle_pairs(std::move(first), std::move(second));
 
   std::vector<Index> wall_ids, wall_partners;
-  for (std::size_t w = 0; w < walls.size(); ++w)
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const Wall reach = candidate_reach(walls[w], skin_);
     for (std::size_t i = 0; i < particles.size(); ++i) {
-      const WallContactGeometry g = wall_sphere_geometry(walls[w], particles.position[i], particles.radius[i]);
+      const WallContactGeometry g = wall_sphere_geometry(reach, particles.position[i], particles.radius[i]);
       if (g.in_range && g.overlap > -skin_) {
         wall_ids.push_back(static_cast<Index>(w));
         wall_partners.push_back(static_cast<Index>(i));
       }
     }
+  }
   contacts.adopt_wall_pairs(std::move(wall_ids), std::move(wall_partners));
 
   position_at_build_ = particles.position;

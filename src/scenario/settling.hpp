@@ -43,8 +43,7 @@ void store_in_space_order(World& world, Stepper& stepper);
 // cannot be honoured and throws std::invalid_argument (the config check refuses
 // contact.bond_gap >= integration.verlet_skin before a run starts). Rebuilding the lists
 // changes no result: forces are summed in pair order and a candidate that is not touching
-// carries no force, so which pairs are candidates never shows in the physics (except near a
-// finite cylinder's ends: ARCHITECTURE.md, Performance).
+// carries no force, so which pairs are candidates never shows in the physics.
 std::size_t install_bonds(World& world, Stepper& stepper, double gap);
 
 }  // namespace colza

@@ -286,6 +286,38 @@ TEST(ForcePaths, TheSkinAndTheMomentOfRebuildsChangeNoResult) {
   }
 }
 
+// The same for a wall whose candidates change because a sphere crosses the end of a finite
+// cylinder: a sphere just beyond the end at a build, moving back into the axial range while
+// pressed against the surface, meets the wall as it enters whether or not the lists were
+// built in between (neighbour/neighbour_search.cpp: the candidate test takes the cylinder
+// as reaching one skin beyond its ends).
+TEST(ForcePaths, ASphereEnteringAShortCylinderMeetsItBetweenBuilds) {
+  const auto run = [](int rebuild_every) {
+    World w;
+    // A sleeve of radius 10 mm from z = 0 to 20 mm. The sphere overlaps its surface by 5 um,
+    // its centre 0.2 mm above the top end, and moves down at 0.5 m/s: it enters the range
+    // after ~400 steps of 1 us, and the wall pushes it towards the axis (at ~0.3 m/s). With a
+    // 2 mm skin nothing moves 1 mm in 800 steps, so the lists are built once unless rebuilt.
+    const double sleeve_radius = 0.01, top = 0.02;
+    w.walls.push_back(Wall::cylinder("sleeve", Vec3::Zero(), Vec3::UnitZ(), sleeve_radius, 0.0, top));
+    w.particles.add(Vec3(sleeve_radius - kRadius + 5e-6, 0.0, top + 0.2e-3), kRadius, 1250.0, 0,
+                    Vec3(0.0, 0.0, -0.5), Vec3::Zero());
+    PhysicsSettings settings = physics({.skin = 2e-3});
+    settings.time_step.fixed_dt = 1e-6;
+    Stepper stepper(settings);
+    stepper.prepare(w);
+    for (int s = 0; s < 800; ++s) {
+      if (rebuild_every > 0 && s % rebuild_every == 0) stepper.rebuild_neighbours(w);
+      stepper.step(w);
+    }
+    return w;
+  };
+  const World built_once = run(0), rebuilt_every_step = run(1);
+  ASSERT_LT(rebuilt_every_step.particles.velocity[0].x(), -0.1);  // the wall did push it inwards
+  expect_same_particles(built_once, rebuilt_every_step);
+  expect_same_contacts(built_once, rebuilt_every_step);
+}
+
 // The batched wall kernel (engine/wall_batch.hpp) on every wall shape: a rectangle's face,
 // edges and corners, a cylinder, planes.
 TEST(ForcePaths, BatchedWallKernelGivesTheScalarReferenceBitsOnEveryShape) {

@@ -110,6 +110,40 @@ TEST(NeighbourSearch, WallCandidatesAreWithinSkinInWallThenParticleOrder) {
   EXPECT_EQ(listed, expected);
 }
 
+// A sphere beyond a finite cylinder's end at a build can move back into the axial range, and
+// touch the wall, before the next build (the sphere and the wall each move less than skin/2,
+// so its axial coordinate changes by less than a skin): the candidate test takes the
+// cylinder as reaching one skin beyond each end.
+TEST(NeighbourSearch, AFiniteCylinderReachesOneSkinBeyondItsEnds) {
+  const double lower = 0.01, upper = 0.03, cylinder_radius = 0.02, r = 3e-3;  // m
+  const std::vector<Wall> walls = {Wall::cylinder("sleeve", Vec3::Zero(), Vec3::UnitZ(), cylinder_radius, lower, upper)};
+  struct Placement {
+    double axial, gap;  // gap to the cylinder's surface, negative = overlap (m)
+    bool candidate;
+  };
+  const Placement placements[] = {
+      {0.5 * (lower + upper), -0.1e-3, true},   // within the range, touching
+      {0.5 * (lower + upper), 0.99 * kSkin, true},
+      {0.5 * (lower + upper), 1.01 * kSkin, false},
+      {upper + 0.99 * kSkin, -0.1e-3, true},     // just beyond an end, but within a skin of it
+      {lower - 0.99 * kSkin, -0.1e-3, true},
+      {upper + 1.01 * kSkin, -0.1e-3, false},    // more than a skin beyond
+      {lower - 1.01 * kSkin, -0.1e-3, false},
+  };
+  ParticleArrays p;
+  std::vector<Index> expected;
+  for (std::size_t k = 0; k < std::size(placements); ++k) {
+    const double angle = 0.8 * static_cast<double>(k);  // apart from each other (no particle pairs)
+    const double rho = cylinder_radius - r - placements[k].gap;
+    p.add(Vec3(rho * std::cos(angle), rho * std::sin(angle), placements[k].axial), r, 1250.0);
+    if (placements[k].candidate) expected.push_back(static_cast<Index>(k));
+  }
+  ContactStore store;
+  NeighbourSearch(kSkin).rebuild(p, walls, store);
+  EXPECT_EQ(store.wall_pairs.particle, expected);
+  EXPECT_EQ(store.particle_pairs.size(), 0u);
+}
+
 TEST(NeighbourSearch, RebuildIsDueExactlyWhenSomethingMovedMoreThanHalfTheSkin) {
   ParticleArrays p = cloud(1000, 5);  // 15 full blocks of 64 particles and a partial one
   std::vector<Wall> walls = floor_and_envelope();
