@@ -99,7 +99,7 @@ std::size_t install_bonds(World& world, Stepper& stepper, double gap) {
   stepper.rebuild_neighbours(world);
   const ParticleArrays& p = world.particles;
   auto& pairs = world.contacts.particle_pairs;
-  std::size_t installed = 0;
+  std::size_t installed = 0, new_contacts = 0;
   for (std::size_t c = 0; c < pairs.size(); ++c) {
     const Index i = pairs.first[c], j = pairs.second[c];
     const Vec3 d = p.position[j] - p.position[i];
@@ -111,12 +111,16 @@ std::size_t install_bonds(World& world, Stepper& stepper, double gap) {
       h.reset();
       h.touching = 1;
       h.normal = d / dist;
+      ++new_contacts;
     }
     if (!h.bonded) {
       h.bonded = 1;
       ++installed;
     }
   }
+  // New contacts stiffen their spheres (k_i grows by kn + ks each), so the critical time step
+  // may have dropped: evaluate it now rather than at the next recompute_interval.
+  if (new_contacts > 0) stepper.update_time_step(world);
   return installed;
 }
 

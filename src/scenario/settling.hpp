@@ -43,7 +43,9 @@ void store_in_space_order(World& world, Stepper& stepper);
 // cannot be honoured and throws std::invalid_argument (the config check refuses
 // contact.bond_gap >= integration.verlet_skin before a run starts). Rebuilding the lists
 // changes no result: forces are summed in pair order and a candidate that is not touching
-// carries no force, so which pairs are candidates never shows in the physics.
+// carries no force, so which pairs are candidates never shows in the physics. When a pair
+// within the gap becomes a contact, the automatic time step is evaluated again at once
+// (a new contact stiffens its spheres).
 std::size_t install_bonds(World& world, Stepper& stepper, double gap);
 
 }  // namespace colza

@@ -2,6 +2,8 @@
 // (contact/contact_store.hpp), and bond installation (scenario/settling.hpp).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "contact/contact_store.hpp"
 #include "core/particles.hpp"
 #include "engine/stepper.hpp"
@@ -184,6 +186,33 @@ TEST(InstallBonds, FindsPairsThatCameWithinTheGapSinceTheLastNeighbourBuild) {
   ASSERT_EQ(w.contacts.particle_pairs.size(), 1u);
   EXPECT_EQ(w.contacts.particle_pairs.history[0].bonded, 1);
   EXPECT_EQ(w.contacts.particle_pairs.history[0].touching, 1);
+}
+
+TEST(InstallBonds, ANewContactLowersTheTimeStepAtOnce) {
+  // Spheres 0-1 touch, 1-2 are 2 um apart (as in BondsTouchingPairsWithinGap), with an
+  // automatic dt evaluated every 1000 steps only. Bonding with a 3 um gap makes 1-2 a contact:
+  // sphere 1 then has two contacts instead of one, so its k_i (and k_i^shear) doubles and the
+  // critical step sqrt(m / k_i) (here the rotational sqrt(I / (k_i^shear R^2)), I = 0.4 m R^2,
+  // the smaller of the two) drops by sqrt(2). The step in use must drop with it, not 999
+  // steps later.
+  PhysicsSettings ph = resting_spheres(1e-4);
+  ph.time_step.automatic = true;
+  ph.time_step.recompute_interval = 1000;
+  const double R = 1e-3;
+  World w;
+  w.particles.add(Vec3(0, 0, 0), R, 1000.0);
+  w.particles.add(Vec3(2 * R - 1e-6, 0, 0), R, 1000.0);
+  w.particles.add(Vec3(4 * R - 1e-6 + 2e-6, 0, 0), R, 1000.0);
+  Stepper st(ph);
+  st.prepare(w);
+  const double dt_one_contact = w.dt;
+  ASSERT_EQ(install_bonds(w, st, 3e-6), 2u);
+  EXPECT_NEAR(w.dt / dt_one_contact, 1.0 / std::sqrt(2.0), 1e-12);
+  // With no new contact (the bonds are on pairs already touching) dt is left alone.
+  World again = w;
+  again.dt = 1e-9;
+  EXPECT_EQ(install_bonds(again, st, 3e-6), 0u);
+  EXPECT_EQ(again.dt, 1e-9);
 }
 
 TEST(InstallBonds, RefusesAGapAsWideAsTheSkin) {
