@@ -4,6 +4,7 @@
 #include <array>
 #include <filesystem>
 #include <numeric>
+#include <sstream>
 
 #include "contact/slot_registry.hpp"
 #include "io/load_label.hpp"
@@ -270,9 +271,13 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
   c.integration = read_integration(root.table("integration"));
   // Bonds join the candidate pairs within bond_gap, and only pairs closer than the Verlet skin
   // are candidates (scenario/settling.hpp install_bonds).
-  if (installs_bonds_at_a_moment(c.contact.bond_install) && c.contact.bond_gap >= c.integration.verlet_skin)
-    contact.fail("bond_gap", "must be below integration.verlet_skin: bonds are put on candidate pairs, and only "
-                             "pairs closer than the skin are sure to be candidates");
+  if (installs_bonds_at_a_moment(c.contact.bond_install) && c.contact.bond_gap >= c.integration.verlet_skin) {
+    // Both values in the message: either may come from the file or from --set.
+    std::ostringstream why;
+    why << c.contact.bond_gap << " m must be below integration.verlet_skin = " << c.integration.verlet_skin
+        << " m: bonds are put on candidate pairs, and only pairs closer than the skin are sure to be candidates";
+    contact.fail("bond_gap", why.str());
+  }
   if (scenario == Scenario::kOedometer) {
     c.sample = read_sample(root.table("sample"));
     c.oedometer = read_oedometer(root.table("oedometer"), c.particle);

@@ -92,6 +92,9 @@ TEST(ConfigValidation, BondGapMustBeBelowTheSkin) {
       "[contact]\nbond = \"contact_bond\"\nbond_gap = 0.0005\n[integration]\nverlet_skin = 0.0005\n");
   EXPECT_EQ(e.key(), "contact.bond_gap");
   EXPECT_NE(e.reason().find("integration.verlet_skin"), std::string::npos) << e.reason();
+  // Both values are printed, since either may come from --set.
+  EXPECT_NE(e.reason().find("0.0005 m must be below integration.verlet_skin = 0.0005 m"), std::string::npos)
+      << e.reason();
   // Below the skin it stands; without bonds, or with bonds formed on new contacts (no gap
   // is used), any gap stands.
   const auto reads = [](const std::string& toml) {
