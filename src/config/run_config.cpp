@@ -272,8 +272,10 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
   // Bonds join the candidate pairs within bond_gap, and only pairs closer than the Verlet skin
   // are candidates (scenario/settling.hpp install_bonds).
   if (installs_bonds_at_a_moment(c.contact.bond_install) && c.contact.bond_gap >= c.integration.verlet_skin) {
-    // Both values in the message: either may come from the file or from --set.
+    // Both values in the message: either may come from the file or from --set. 15 digits,
+    // so that a gap a hair above the skin does not print as the same number.
     std::ostringstream why;
+    why.precision(15);
     why << c.contact.bond_gap << " m must be below integration.verlet_skin = " << c.integration.verlet_skin
         << " m: bonds are put on candidate pairs, and only pairs closer than the skin are sure to be candidates";
     contact.fail("bond_gap", why.str());

@@ -8,11 +8,11 @@ namespace colza {
 namespace {
 
 // The wall as the candidate test sees it. A finite cylinder reaches one skin beyond each of
-// its ends: between two builds the sphere and the wall each move less than skin/2, so the
-// sphere's axial coordinate (measured from the wall's origin) changes by less than a skin,
+// its ends: between two builds the sphere and the wall each move at most skin/2, so the
+// sphere's axial coordinate (measured from the wall's origin) changes by at most a skin,
 // and a sphere just beyond an end at the build may be within the range, and touching,
 // before the next build. Planes and rectangles need no widening: their gap is a distance to
-// the whole surface, edges and corners included, so it closes by less than a skin.
+// the whole surface, edges and corners included, so it closes by at most a skin.
 Wall candidate_reach(const Wall& wall, double skin) {
   Wall reach = wall;
   if (reach.shape == WallShape::kCylinder) {

@@ -292,11 +292,11 @@ TEST(ForcePaths, TheSkinAndTheMomentOfRebuildsChangeNoResult) {
 // built in between (neighbour/neighbour_search.cpp: the candidate test takes the cylinder
 // as reaching one skin beyond its ends).
 TEST(ForcePaths, ASphereEnteringAShortCylinderMeetsItBetweenBuilds) {
-  const auto run = [](int rebuild_every) {
+  const auto run = [](int rebuild_every, std::uint64_t expected_builds) {
     World w;
     // A sleeve of radius 10 mm from z = 0 to 20 mm. The sphere overlaps its surface by 5 um,
     // its centre 0.2 mm above the top end, and moves down at 0.5 m/s: it enters the range
-    // after ~400 steps of 1 us, and the wall pushes it towards the axis (at ~0.3 m/s). With a
+    // after ~400 steps of 1 us, and the wall pushes it towards the axis (at ~0.25 m/s). With a
     // 2 mm skin nothing moves 1 mm in 800 steps, so the lists are built once unless rebuilt.
     const double sleeve_radius = 0.01, top = 0.02;
     w.walls.push_back(Wall::cylinder("sleeve", Vec3::Zero(), Vec3::UnitZ(), sleeve_radius, 0.0, top));
@@ -310,9 +310,11 @@ TEST(ForcePaths, ASphereEnteringAShortCylinderMeetsItBetweenBuilds) {
       if (rebuild_every > 0 && s % rebuild_every == 0) stepper.rebuild_neighbours(w);
       stepper.step(w);
     }
+    EXPECT_EQ(stepper.neighbours().rebuild_count(), expected_builds);
     return w;
   };
-  const World built_once = run(0), rebuilt_every_step = run(1);
+  // prepare() builds once; rebuild_neighbours() once more per step, and a step after it never does.
+  const World built_once = run(0, 1), rebuilt_every_step = run(1, 801);
   ASSERT_LT(rebuilt_every_step.particles.velocity[0].x(), -0.1);  // the wall did push it inwards
   expect_same_particles(built_once, rebuilt_every_step);
   expect_same_contacts(built_once, rebuilt_every_step);

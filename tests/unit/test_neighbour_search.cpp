@@ -111,8 +111,8 @@ TEST(NeighbourSearch, WallCandidatesAreWithinSkinInWallThenParticleOrder) {
 }
 
 // A sphere beyond a finite cylinder's end at a build can move back into the axial range, and
-// touch the wall, before the next build (the sphere and the wall each move less than skin/2,
-// so its axial coordinate changes by less than a skin): the candidate test takes the
+// touch the wall, before the next build (the sphere and the wall each move at most skin/2,
+// so its axial coordinate changes by at most a skin): the candidate test takes the
 // cylinder as reaching one skin beyond each end.
 TEST(NeighbourSearch, AFiniteCylinderReachesOneSkinBeyondItsEnds) {
   const double lower = 0.01, upper = 0.03, cylinder_radius = 0.02, r = 3e-3;  // m
