@@ -41,6 +41,16 @@ PhysicsSettings resting_spheres(double skin) {
   return ph;
 }
 
+// Three spheres R = 1 mm on the x axis: 0-1 overlap by 1 um, 1-2 are 2 um apart, 0-2 far apart.
+World three_spheres_on_x() {
+  const double R = 1e-3;  // m
+  World w;
+  w.particles.add(Vec3(0, 0, 0), R, 1000.0);
+  w.particles.add(Vec3(2 * R - 1e-6, 0, 0), R, 1000.0);
+  w.particles.add(Vec3(4 * R - 1e-6 + 2e-6, 0, 0), R, 1000.0);
+  return w;
+}
+
 bool same(const ContactHistory& a, const ContactHistory& b) {
   return a.shear_force == b.shear_force && a.normal == b.normal && a.normal_force == b.normal_force &&
          a.touching == b.touching && a.bonded == b.bonded;
@@ -139,13 +149,8 @@ TEST(ContactStore, RenumberPermutationSwapsBodiesAndFlipsVectors) {
 }
 
 TEST(InstallBonds, BondsTouchingPairsWithinGap) {
-  // Three spheres R = 1 mm on the x axis: 0-1 overlap 1 um, 1-2 gap 2 um, 0-2 far apart.
   const PhysicsSettings ph = resting_spheres(1e-4);
-  const double R = 1e-3;
-  World w;
-  w.particles.add(Vec3(0, 0, 0), R, 1000.0);
-  w.particles.add(Vec3(2 * R - 1e-6, 0, 0), R, 1000.0);
-  w.particles.add(Vec3(4 * R - 1e-6 + 2e-6, 0, 0), R, 1000.0);
+  World w = three_spheres_on_x();
   Stepper st(ph);
   st.prepare(w);
   ASSERT_EQ(w.contacts.particle_pairs.size(), 2u);  // (0,1), (1,2) within the skin
@@ -189,7 +194,7 @@ TEST(InstallBonds, FindsPairsThatCameWithinTheGapSinceTheLastNeighbourBuild) {
 }
 
 TEST(InstallBonds, ANewContactLowersTheTimeStepAtOnce) {
-  // Spheres 0-1 overlap, 1-2 are 2 um apart (as in BondsTouchingPairsWithinGap), with an
+  // three_spheres_on_x (0-1 overlap, 1-2 are 2 um apart), with an
   // automatic dt evaluated every 1000 steps only. No force pass has run, so no pair is marked
   // touching and prepare() counts each sphere as having one contact (the convention for a
   // body without contacts). Bonding with a 3 um gap makes both pairs contacts: sphere 1 then
@@ -199,11 +204,7 @@ TEST(InstallBonds, ANewContactLowersTheTimeStepAtOnce) {
   PhysicsSettings ph = resting_spheres(1e-4);
   ph.time_step.automatic = true;
   ph.time_step.recompute_interval = 1000;
-  const double R = 1e-3;
-  World w;
-  w.particles.add(Vec3(0, 0, 0), R, 1000.0);
-  w.particles.add(Vec3(2 * R - 1e-6, 0, 0), R, 1000.0);
-  w.particles.add(Vec3(4 * R - 1e-6 + 2e-6, 0, 0), R, 1000.0);
+  World w = three_spheres_on_x();
   Stepper st(ph);
   st.prepare(w);
   const double dt_one_contact = w.dt;
