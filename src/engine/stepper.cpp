@@ -27,8 +27,7 @@ Stepper::Stepper(PhysicsSettings physics)
       neighbours_(physics_.skin) {}
 
 void Stepper::prepare(World& world) {
-  neighbours_.invalidate();
-  neighbours_.rebuild(world.particles, world.walls, world.contacts);
+  rebuild_neighbours(world);
   update_time_step(world);
 }
 

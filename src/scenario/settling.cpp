@@ -94,7 +94,7 @@ std::size_t install_bonds(World& world, Stepper& stepper, double gap) {
     throw std::invalid_argument(why.str());
   }
   // A pair that was not a candidate at the last build may have closed by up to the skin since
-  // (each sphere moves less than skin/2 between builds): only a fresh list holds every pair
+  // (each sphere moves at most skin/2 between builds): only a fresh list holds every pair
   // whose gap is below the skin.
   stepper.rebuild_neighbours(world);
   const ParticleArrays& p = world.particles;

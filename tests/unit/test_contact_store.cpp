@@ -194,10 +194,9 @@ TEST(InstallBonds, FindsPairsThatCameWithinTheGapSinceTheLastNeighbourBuild) {
 }
 
 TEST(InstallBonds, ANewContactLowersTheTimeStepAtOnce) {
-  // three_spheres_on_x (0-1 overlap, 1-2 are 2 um apart), with an
-  // automatic dt evaluated every 1000 steps only. No force pass has run, so no pair is marked
-  // touching and prepare() counts each sphere as having one contact (the convention for a
-  // body without contacts). Bonding with a 3 um gap makes both pairs contacts: sphere 1 then
+  // three_spheres_on_x (0-1 overlap, 1-2 are 2 um apart), with an automatic dt evaluated
+  // every 1000 steps only. No force pass has run, so no pair is marked touching and prepare()
+  // counts each sphere as having one contact (the convention for a body without contacts). Bonding with a 3 um gap makes both pairs contacts: sphere 1 then
   // has two, so its k_i (and k_i^shear) doubles and the critical step sqrt(m / k_i) (here the
   // rotational sqrt(I / (k_i^shear R^2)), I = 0.4 m R^2, the smaller of the two) drops by
   // sqrt(2). The step in use must drop with it, not 999 steps later.
@@ -231,11 +230,7 @@ TEST(InstallBonds, RefusesAGapAsWideAsTheSkin) {
 TEST(DiscardAbove, RemovesSpheresAndTheirContacts) {
   // Column of 3 touching spheres (R = 1 mm) on z, centres at ~1, 3, 5 mm, tops at ~2, 4, 6 mm;
   // discard those whose top z + R > 4.5 mm: sphere 2 goes, its contact with sphere 1 goes too.
-  PhysicsSettings ph;
-  ph.particle_materials = {{"seed", 1000.0, 1e5, 1e5, 0.3}};
-  ph.time_step.automatic = false;
-  ph.time_step.fixed_dt = 1e-7;
-  ph.skin = 1e-4;
+  const PhysicsSettings ph = resting_spheres(1e-4);  // no step is taken: gravity plays no part
   const double R = 1e-3;
   World w;
   for (int i = 0; i < 3; ++i) w.particles.add(Vec3(0, 0, R + i * (2 * R - 1e-6)), R, 1000.0);
