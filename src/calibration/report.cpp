@@ -225,9 +225,9 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
        "standard error and (when measured) the realisation scatter the surfaces do not show are propagated "
        "separately and combined in quadrature.\n";
   if (p.target_correlation.size() == 4)
-    o << "The measured cohesion and tan(Phi) come from one line, so their errors are taken as correlated ("
-      << g(p.target_correlation(0, 1), 3) << "): the weights and the measurement's share of the uncertainty use the "
-      << "full covariance.\n";
+    o << "The measured " << p.targets[0].name << " and " << p.targets[1].name
+      << " come from one fit, so their errors are taken as correlated (" << g(p.target_correlation(0, 1), 3)
+      << "): the weights and the measurement's share of the uncertainty use the full covariance.\n";
 
   const bool mean = r.scatter.size() && r.mode == "paper";
   o << "\n## Validation against the measured data\n\n| target | measured | surface at solution | DEM at solution"

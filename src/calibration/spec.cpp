@@ -329,6 +329,15 @@ Spec read_spec(const std::string& path) {
       p.targets.push_back({"c1", "N/m", m.number("c1"), u1});
       p.targets.push_back({"c2", "N/m^2", m.number("c2"), u2});
     }
+    // c1 and c2 come from one quadratic over the same range, so their errors are seldom
+    // independent: from sample to sample a stiffer start (c1) goes with a flatter rise (c2).
+    // [measured] correlation gives it (e.g. from repeated tests); not set: independent.
+    s.correlation_given = m.has("correlation");
+    if (s.correlation_given) {
+      const double rho = m.number("correlation");
+      if (!(rho > -1.0 && rho < 1.0)) m.fail("correlation", "must lie strictly between -1 and 1, got " + fmt(rho));
+      p.target_correlation = (Eigen::Matrix2d() << 1.0, rho, rho, 1.0).finished();
+    }
   } else {
     const double uc = m.positive("cohesion_uncertainty"), ut = m.positive("tan_phi_uncertainty");
     const bool has_results = m.has("results"), has_curves = m.has("curves");

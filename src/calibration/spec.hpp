@@ -28,7 +28,8 @@ struct Spec {
   // shear_box.packing_file, not a shared packing): then the seed changes nothing, and another
   // seed is the same run, not another realisation. Empty when the seed makes the sample.
   std::string fixed_packing_file;
-  bool correlation_given = false;   // shear: [measured] correlation set (else derived from the measured loads)
+  bool correlation_given = false;   // [measured] correlation set (else shear: derived from the measured
+                                    // loads; compression: independent)
   Problem problem;                  // parameters, targets, design, sequential settings
   std::vector<double> loads;        // shear: normal stresses of each design run's series (Pa)
   // What the targets were derived from, for the report.

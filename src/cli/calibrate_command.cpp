@@ -195,6 +195,11 @@ int calibrate_command(const CalibrateOptions& opt) {
                        "strengths of equal, independent uncertainty at the measured loads; set [measured] correlation "
                        "(0: independent) if the stated uncertainties did not come from such a fit.";
   }
+  if (spec.stage == Stage::kCompression)
+    ctx.notes += std::string(ctx.notes.empty() ? "" : " ") +
+                 (spec.correlation_given ? "The correlation of the measured c1 and c2 is the spec's ([measured] correlation)."
+                                         : "The measured c1 and c2 are taken as independent; set [measured] correlation "
+                                           "if repeated tests show how they vary together.");
   ctx.measured = measured_data_summary(spec);
   ctx.measured_section = measured_data_section(spec);
   for (const auto& run : result.runs) {
