@@ -28,13 +28,17 @@ Stepper::Stepper(PhysicsSettings physics)
 
 void Stepper::prepare(World& world) {
   rebuild_neighbours(world);
-  update_time_step(world);
+  set_time_step(world, CountedContacts::kTouchingOrOverlapping);
 }
 
-void Stepper::update_time_step(World& world) {
+void Stepper::update_time_step(World& world) { set_time_step(world, CountedContacts::kTouching); }
+
+void Stepper::set_time_step(World& world, CountedContacts counted) {
   world.dt = physics_.time_step.automatic
-                 ? physics_.time_step.safety_factor * critical_time_step(world.particles, world.walls, world.contacts, pairs_)
+                 ? physics_.time_step.safety_factor *
+                       critical_time_step(world.particles, world.walls, world.contacts, pairs_, counted)
                  : physics_.time_step.fixed_dt;
+  time_step_set_at_ = world.step;
 }
 
 namespace {
@@ -322,7 +326,7 @@ void Stepper::rebuild_neighbours(World& world) {
 void Stepper::begin_step(World& world) {
   throw_if_interrupted();  // Ctrl-C or SIGTERM: unwind between steps (core/interrupt.hpp)
   if (physics_.time_step.automatic && physics_.time_step.recompute_interval > 0 &&
-      world.step % physics_.time_step.recompute_interval == 0)
+      world.step % physics_.time_step.recompute_interval == 0 && time_step_set_at_ != world.step)
     update_time_step(world);
   if (neighbours_.needs_rebuild(world.particles, world.walls))
     neighbours_.rebuild(world.particles, world.walls, world.contacts, worker_threads());

@@ -2,6 +2,7 @@
 //   neighbour lists (if stale) -> contact geometry -> contact law -> forces on bodies
 //   -> leapfrog integration with local damping -> walls move -> clock advances.
 #pragma once
+#include <optional>
 #include <vector>
 #include "engine/energy.hpp"
 #include "engine/force_partition.hpp"
@@ -20,7 +21,9 @@ class Stepper {
  public:
   explicit Stepper(PhysicsSettings physics);
 
-  // Sets world.dt from the settings (fixed or critical estimate) and forces a neighbour rebuild.
+  // Forces a neighbour rebuild and sets world.dt from the settings (fixed, or the critical
+  // estimate counting the pairs that overlap now as contacts: no force pass has marked them
+  // yet). The periodic re-evaluation does not repeat it at the same step.
   void prepare(World& world);
   void step(World& world) {
     begin_step(world);
@@ -46,6 +49,7 @@ class Stepper {
   // Builds the candidate lists now: afterwards every pair closer than the skin is a candidate
   // (install_bonds needs that). No result depends on when the lists are built.
   void rebuild_neighbours(World& world);
+  // Sets world.dt from the settings, counting the contacts the last force pass marked.
   void update_time_step(World& world);
   // Stored plus dissipated energies: constant (up to O(dt^2)) when the bookkeeping is complete.
   EnergySnapshot energy(const World& world) const { return measure_energy(world, physics_, pairs_); }
@@ -80,12 +84,14 @@ class Stepper {
 
  private:
   void compute_forces(World& world);
+  void set_time_step(World& world, CountedContacts counted);
   PhysicsSettings physics_;
   PairTable pairs_;
   NeighbourSearch neighbours_;
   IntegrationReport last_integration_;
   IntegrationSums sums_;
   BetweenHalves between_halves_ = BetweenHalves::kParticles;
+  std::optional<std::uint64_t> time_step_set_at_;  // world.step at which dt was last set
   bool integrated_with_forces_ = false;  // this step's motion was done by the threaded force loop
   EnergyLedger ledger_;
   ContactEvents events_;

@@ -6,13 +6,16 @@
 namespace colza {
 
 double critical_time_step(const ParticleArrays& p, const std::vector<Wall>& walls, const ContactStore& contacts,
-                          const PairTable& pairs) {
+                          const PairTable& pairs, CountedContacts counted) {
+  const bool overlaps_count = counted == CountedContacts::kTouchingOrOverlapping;
   const std::size_t n = p.size();
   std::vector<double> k_trans(n, 0.0), k_shear(n, 0.0);
   const auto& pp = contacts.particle_pairs;
   for (std::size_t c = 0; c < pp.size(); ++c) {
-    if (!pp.history[c].touching) continue;
     const Index i = pp.first[c], j = pp.second[c];
+    const double reach = p.radius[i] + p.radius[j];
+    if (!pp.history[c].touching && !(overlaps_count && (p.position[j] - p.position[i]).squaredNorm() < reach * reach))
+      continue;
     const PairParameters& q = pairs.particle_particle(p.material[i], p.material[j]);
     k_trans[i] += q.kn + q.ks;
     k_trans[j] += q.kn + q.ks;
@@ -21,8 +24,12 @@ double critical_time_step(const ParticleArrays& p, const std::vector<Wall>& wall
   }
   const auto& pw = contacts.wall_pairs;
   for (std::size_t c = 0; c < pw.size(); ++c) {
-    if (!pw.history[c].touching) continue;
     const Index i = pw.particle[c];
+    if (!pw.history[c].touching) {
+      if (!overlaps_count) continue;
+      const WallContactGeometry g = wall_sphere_geometry(walls[pw.wall[c]], p.position[i], p.radius[i]);
+      if (!(g.in_range && g.overlap > 0.0)) continue;
+    }
     const PairParameters& q = pairs.particle_wall(p.material[i], walls[pw.wall[c]].material);
     k_trans[i] += q.kn + q.ks;
     k_shear[i] += q.ks;

@@ -20,8 +20,17 @@ struct TimeStepSettings {
   std::uint64_t recompute_interval = 100;  // steps between re-evaluations
 };
 
+// Which candidate pairs count as contacts. kTouching: those the last force pass marked
+// touching (bonded pairs in tension included), which is current from the first force pass
+// on. kTouchingOrOverlapping: also those whose bodies overlap now, for a state no force pass
+// has seen yet (a packing read from a file, a sample placed in a new container): by flags
+// alone it would have no contact, and its dt would come out sqrt(coordination) too large
+// (2.8x for the settled oedometer packing: 1.29e-5 against 4.56e-6 s).
+enum class CountedContacts { kTouching, kTouchingOrOverlapping };
+
 // Returns min_i min(sqrt(m_i / k_i), sqrt(I_i / kr_i)) (s), without the safety factor.
 double critical_time_step(const ParticleArrays& particles, const std::vector<Wall>& walls,
-                          const ContactStore& contacts, const PairTable& pairs);
+                          const ContactStore& contacts, const PairTable& pairs,
+                          CountedContacts counted = CountedContacts::kTouching);
 
 }  // namespace colza

@@ -195,9 +195,9 @@ TEST(InstallBonds, FindsPairsThatCameWithinTheGapSinceTheLastNeighbourBuild) {
 
 TEST(InstallBonds, ANewContactLowersTheTimeStepAtOnce) {
   // three_spheres_on_x (0-1 overlap, 1-2 are 2 um apart), with an automatic dt evaluated
-  // every 1000 steps only. No force pass has run, so no pair is marked touching and prepare()
-  // counts each sphere as having one contact (the convention for a body without contacts). Bonding with a 3 um gap makes both pairs contacts: sphere 1 then
-  // has two, so its k_i (and k_i^shear) doubles and the critical step sqrt(m / k_i) (here the
+  // every 1000 steps only. prepare() counts the overlapping pair: sphere 1 has one contact.
+  // Bonding with a 3 um gap makes both pairs contacts: sphere 1 then has two, so its k_i
+  // (and k_i^shear) doubles and the critical step sqrt(m / k_i) (here the
   // rotational sqrt(I / (k_i^shear R^2)), I = 0.4 m R^2, the smaller of the two) drops by
   // sqrt(2). The step in use must drop with it, not 999 steps later.
   PhysicsSettings ph = resting_spheres(1e-4);

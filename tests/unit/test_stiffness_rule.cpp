@@ -207,3 +207,41 @@ TEST(CriticalTimeStep, OedometerLikeThreeWallsOneMaterial) {
   const double kn = 437e3 * 4000e3 / 4437e3, ks = 100e3 * 1000e3 / 1100e3;
   EXPECT_NEAR(critical_time_step(p, walls, c, t), std::sqrt(m / (kn + ks)), 1e-18);
 }
+
+TEST(CriticalTimeStep, PrepareCountsTheOverlapsOfAStateNoForcePassHasSeen) {
+  // A packing read from a file, or a sample placed in a new container, has no touching flags
+  // until its first force pass. Three spheres in a row on the plane y = 0, every neighbour
+  // pair and every sphere-plane pair overlapping by 1 um, contact rule: the middle sphere has
+  // two particle contacts and one wall contact, k = 2 (kn + ks) + (kn_w + ks_w) = 6.074e6 N/m
+  // and dt = f sqrt(m / k) (rotational: sqrt(0.4 m / (2 ks + ks_w)) = sqrt(m / 3e6) is
+  // larger). prepare() must give that at once. By the flags alone every sphere counts one
+  // contact with its own material, sqrt(m / (kn + ks)), 3.4x larger: before session 21 the
+  // first recompute_interval steps of a run from a packing ran with that.
+  const double R = 3e-3, rho = 1250.0, kn = 437e3, ks = 100e3, knw = 4000e3, ksw = 1000e3, f = 0.8;
+  PhysicsSettings s;
+  s.particle_materials = {seed_material(kn, ks, 0.2)};
+  s.wall_materials = {wall_material(knw, ksw, 0.2)};
+  s.stiffness_rule = StiffnessRule::kContact;
+  s.skin = 1e-4;
+  s.time_step.automatic = true;
+  s.time_step.safety_factor = f;
+  s.time_step.recompute_interval = 1;  // re-evaluated from the flags at every step but the first
+  s.integrator.gravity = Vec3::Zero();
+  World w;
+  for (double x : {-(2 * R - 1e-6), 0.0, 2 * R - 1e-6}) w.particles.add(Vec3(x, R - 1e-6, 0), R, rho);
+  w.walls.push_back(Wall::plane("floor", Vec3::Zero(), Vec3::UnitY()));
+  Stepper stepper(s);
+  stepper.prepare(w);
+  const double m = rho * 4.0 / 3.0 * kPi * R * R * R;
+  const double expected = f * std::sqrt(m / (2 * (kn + ks) + knw + ksw));
+  EXPECT_NEAR(w.dt, expected, 1e-12 * expected);
+  const double by_flags = critical_time_step(w.particles, w.walls, w.contacts, stepper.pairs());
+  EXPECT_NEAR(by_flags, std::sqrt(m / (kn + ks)), 1e-12 * by_flags);
+  // The first force pass marks the same contacts touching; the next step's estimate from the
+  // flags is the same number.
+  stepper.step(w);
+  ASSERT_EQ(w.contacts.touching_particle_contacts(), 2u);
+  ASSERT_EQ(w.contacts.touching_wall_contacts(), 3u);
+  stepper.step(w);
+  EXPECT_NEAR(w.dt, expected, 1e-9 * expected);  // the spheres moved apart a little, not out of contact
+}
