@@ -33,9 +33,16 @@
 #                    the tangent-plane rotation are colza's too. A patch can only touch its
 #                    own sphere (another sphere would have to overlap that sphere by about R
 #                    to reach it); patches of spheres farther than PATCH_RANGE_FACTOR R from
-#                    the surface are parked far away. geom.facetCylinder is not used: a
-#                    polygon of triangles changes the surface by Rc (1/cos(pi/N) - 1) and gives
-#                    spheres extra edge contacts at every facet edge under their footprint.
+#                    the surface, or from the cylinder's axial range, are parked far away.
+#                    An active patch whose sphere is beyond an end waits at that end, at the
+#                    sphere's azimuth, PATCH_RIM_GAP_FACTOR R outside the surface: out of
+#                    reach of the sphere, but close enough that the collider's bounds (grown
+#                    by verletDist) keep the pair, so the contact starts in the step the
+#                    centre enters the range. (Teleported there from the far parking place,
+#                    the patch was only seen at the collider's next run: one step late.)
+#                    geom.facetCylinder is not used: a polygon of triangles changes the
+#                    surface by Rc (1/cos(pi/N) - 1) and gives spheres extra edge contacts at
+#                    every facet edge under their footprint.
 #   * NewtonIntegrator(damping=alpha, gravity=g) is colza's damping_form = "yade"; fixed O.dt.
 #   * The recorder runs in a PyRunner placed after InteractionLoop and before
 #     NewtonIntegrator: it sees x(t_n), v(t_n - dt/2) and the contact forces of step n,
@@ -63,6 +70,9 @@ PLANE_HALF_SIZE = 10.0        # m, half extent of the box that stands in for an 
 PATCH_RANGE_FACTOR = 1.0      # a sphere gets an active cylinder patch when its gap to the surface < this x R
 PATCH_REFRESH_STEPS = 20      # steps between re-evaluations of which spheres have an active patch
 PARK_DISTANCE = 1.0e3         # m, where inactive patches wait (each at its own spot)
+PATCH_RIM_GAP_FACTOR = 0.25   # an active patch of a sphere beyond an end waits this x R outside
+                              # the surface: the sphere would need an overlap of 0.25 R to touch
+                              # it; within verletDist (0.5 R_min by default) of where it goes next
 
 # Group masks: spheres collide with spheres, walls and patches; patches only with spheres;
 # walls only with spheres (avoidSelfInteractionMask stops wall-wall and patch-patch pairs).
@@ -361,7 +371,12 @@ class Model:
                 rho = math.sqrt(qx * qx + qy * qy + qz * qz)
                 in_range = lo <= axial <= hi and rho > 0.0
                 if refresh:
-                    want = in_range and (rc - rho - r) < PATCH_RANGE_FACTOR * r
+                    # The same margin along the axis as towards the surface: a sphere just
+                    # beyond an end at a refresh may enter the range before the next one
+                    # (colza's candidate test likewise reaches a skin beyond the ends).
+                    margin = PATCH_RANGE_FACTOR * r
+                    want = (lo - margin <= axial <= hi + margin and rho > 0.0
+                            and (rc - rho - r) < margin)
                     if not want:
                         if i in active:
                             active.discard(i)
@@ -369,7 +384,13 @@ class Model:
                         continue
                     active.add(i)
                 if not in_range:
-                    pst.pos = park
+                    if rho > 0.0 and rho < rc:  # beyond an end, inside the surface: wait at the end
+                        end = lo if axial < lo else hi
+                        s = (rc + PATCH_RIM_GAP_FACTOR * r) / rho
+                        pst.pos = Vector3(o[0] + end * a[0] + s * qx, o[1] + end * a[1] + s * qy,
+                                          o[2] + end * a[2] + s * qz)
+                    else:
+                        pst.pos = park
                     continue
                 s = rc / rho
                 pst.pos = Vector3(o[0] + axial * a[0] + s * qx, o[1] + axial * a[1] + s * qy,
