@@ -90,6 +90,7 @@ SettleResult settle_generated_sample(World& world, Stepper& stepper, const Sampl
 std::size_t install_bonds(World& world, Stepper& stepper, double gap) {
   if (!(gap < stepper.physics().skin)) {
     std::ostringstream why;
+    why.precision(15);  // as the config check's message: a gap a hair above the skin must not print as it
     why << "bond gap " << gap << " m is not below the Verlet skin " << stepper.physics().skin << " m";
     throw std::invalid_argument(why.str());
   }

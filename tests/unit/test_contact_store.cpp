@@ -225,6 +225,13 @@ TEST(InstallBonds, RefusesAGapAsWideAsTheSkin) {
   Stepper st(resting_spheres(0.5e-3));
   st.prepare(w);
   EXPECT_THROW(install_bonds(w, st, 0.5e-3), std::invalid_argument);
+  // A gap a hair above the skin prints as a different number (15 digits, not 6).
+  try {
+    install_bonds(w, st, 0.50000001e-3);
+    ADD_FAILURE() << "no throw";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "bond gap 0.00050000001 m is not below the Verlet skin 0.0005 m");
+  }
 }
 
 TEST(DiscardAbove, RemovesSpheresAndTheirContacts) {
