@@ -26,8 +26,9 @@
 // sample's curve does not determine it. So the tests assert that kn_p moves at least halfway
 // from the design's centre (450 kN/m) to the truth (520 kN/m, 0.33), which a calibration that
 // did nothing would fail, and that mu_pp is either found or colza says it was not (a
-// warning: not or weakly determined, or the validation missing the measurement). A tight
-// DEM identity test of this stage needs a larger sample (not written yet).
+// warning: not or weakly determined, or the validation missing the measurement). The tight
+// DEM identity test of this stage is on the full-size oedometer:
+// tests/full/test_calibrate_compression_identity.cpp (label full).
 // Density: each run settles (~5 s); 2 design points + validation. On 117 particles the
 // settled bulk density scatters by 3-4 % between packings (rho_p = 1290 settles denser than
 // 1300), more than the design's +/- 4 % in rho_p moves it, so this test checks the loop and
@@ -39,10 +40,9 @@
 #include <set>
 
 #include <cmath>
-#include <cstdio>
-#include <limits>
 
 #include "cli_runner.hpp"
+#include "compression_truth.hpp"
 
 using namespace colza::testing;
 namespace fs = std::filesystem;
@@ -51,40 +51,6 @@ namespace {
 
 const std::string kOed = source_path("tests/data/small_oedometer.toml");
 const std::string kLoad = "--set oedometer.stop_force=1500 --set oedometer.fit_force_max=1400 ";
-
-// x with all its digits, as a TOML value or a --set argument.
-std::string exact(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", x);
-  return text;
-}
-
-// Means, sample standard deviations and correlation of paired samples x, y.
-struct Scatter {
-  double mean_x, mean_y, sd_x, sd_y, rho;
-};
-Scatter scatter_of(const std::vector<double>& x, const std::vector<double>& y) {
-  const double n = static_cast<double>(x.size());
-  double mx = 0.0, my = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) mx += x[i] / n, my += y[i] / n;
-  double sxx = 0.0, syy = 0.0, sxy = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    sxx += (x[i] - mx) * (x[i] - mx), syy += (y[i] - my) * (y[i] - my), sxy += (x[i] - mx) * (y[i] - my);
-  return {mx, my, std::sqrt(sxx / (n - 1.0)), std::sqrt(syy / (n - 1.0)), sxy / std::sqrt(sxx * syy)};
-}
-
-// Index of the sample nearest the mean in Mahalanobis distance,
-// d^2 = (zx^2 - 2 rho zx zy + zy^2) / (1 - rho^2) with z the standardised deviations.
-std::size_t nearest_to_mean(const std::vector<double>& x, const std::vector<double>& y, const Scatter& s) {
-  std::size_t best = 0;
-  double best_d2 = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double zx = (x[i] - s.mean_x) / s.sd_x, zy = (y[i] - s.mean_y) / s.sd_y;
-    const double d2 = (zx * zx - 2.0 * s.rho * zx * zy + zy * zy) / (1.0 - s.rho * s.rho);
-    if (d2 < best_d2) best_d2 = d2, best = i;
-  }
-  return best;
-}
 
 // The packing, the synthetic measurement at the truth, its scatter, and the spec.
 class CalibrateCompression : public ::testing::Test {
@@ -96,35 +62,11 @@ class CalibrateCompression : public ::testing::Test {
                         "--set particle.normal_stiffness=450e3 --set particle.friction=0.3 --out " + (dir_ / "pack").string())
                   .exit_code, 0);
     const std::string packing = (dir_ / "pack" / "packing.txt").string();
-    // Seven realisations of the truth (520 kN/m, 0.33): mu_pp moved by k x 1e-6 (k = 0..6)
-    // changes no physics, only the chaotic path. The measured curve is the realisation
-    // nearest their mean (a lab reports a typical specimen), its uncertainties their scatter.
-    std::vector<double> c1, c2;
-    for (int k = 0; k <= 6; ++k) {
-      const fs::path out = dir_ / ("realisation-" + std::to_string(k));
-      ASSERT_EQ(run_colza("run oedometer --quiet --config " + kOed + " " + kLoad + "--set oedometer.packing_file='\"" +
-                          packing + "\"' --set particle.normal_stiffness=520e3 --set particle.friction=" +
-                          exact(0.33 + 1e-6 * k) + " --out " + out.string())
-                    .exit_code, 0);
-      const auto fit = read_json(out / "summary.json")["fit"];
-      c1.push_back(fit["c1"].get<double>());
-      c2.push_back(fit["c2"].get<double>());
-    }
-    const Scatter sc = scatter_of(c1, c2);
-    const std::size_t typical = nearest_to_mean(c1, c2, sc);
-    // measured.csv in the spec's plain format: displacement (m), force (N).
-    std::istringstream in(read_file(dir_ / ("realisation-" + std::to_string(typical)) / "curve.csv"));
-    std::string line, csv = "displacement,force\n";
-    std::getline(in, line);
-    while (std::getline(in, line)) {
-      std::istringstream r(line);
-      std::string t, s, f;
-      std::getline(r, t, ',');
-      std::getline(r, s, ',');
-      std::getline(r, f, ',');
-      csv += s + "," + f + "\n";
-    }
-    write_file(dir_ / "measured.csv", csv);
+    // The measurement: seven realisations of the truth (520 kN/m, 0.33), the curve of the one
+    // nearest their mean, their scatter as its uncertainties (compression_truth.hpp).
+    const CompressionTruth truth = make_compression_truth(
+        dir_, "run oedometer --quiet --config " + kOed + " " + kLoad + "--set oedometer.packing_file='\"" + packing + "\"'",
+        520e3, 0.33, 7);
     write_file(dir_ / "spec.toml", "stage = \"compression\"\n[model]\nconfig = \"" + kOed +
                                   "\"\nset = [\"oedometer.stop_force=1500.0\", \"oedometer.fit_force_max=1400.0\", "
                                   "\"oedometer.packing_file=\\\"" + packing + "\\\"\"]\n"
@@ -132,9 +74,8 @@ class CalibrateCompression : public ::testing::Test {
                                   "design = [350e3, 450e3, 450e3, 450e3, 550e3]\n"
                                   "[[parameters]]\nname = \"mu_pp\"\nkey = \"particle.friction\"\n"
                                   "design = [0.3, 0.2, 0.3, 0.4, 0.3]\n"
-                                  "[sequential]\nmax_runs = 10\n"
-                                  "[measured]\ncurve = \"measured.csv\"\nc1_uncertainty = " + exact(sc.sd_x) +
-                                  "\nc2_uncertainty = " + exact(sc.sd_y) + "\ncorrelation = " + exact(sc.rho) + "\n");
+                                  "[sequential]\nmax_runs = 10\n" +
+                                  measured_table(truth));
   }
   static fs::path dir_;
 };
