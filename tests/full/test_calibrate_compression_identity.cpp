@@ -1,9 +1,9 @@
 // DEM identity test of the compression stage of `colza calibrate` on the paper's full-size
-// oedometer (label `full`; 12 min on 2 cores for
-// the two tests under ctest: each process makes the truth, then paper 290 s, sequential 410 s in all). The "measured" curve is made by colza at known
-// parameters other than the paper's, kn_p = 470 kN/m and mu_pp = 0.33 (rho_p = 1230 kg/m^3,
-// Table 1 otherwise), the way a lab would report it: five realisations of that truth, the
-// curve of the one nearest their mean, their scatter as the uncertainties of c1 and c2 and
+// oedometer (label `full`; 12 min on 2 cores for the two tests under ctest, each process
+// making the truth: paper 290 s, sequential 410 s in all). The "measured" curve is made by
+// colza at known parameters other than the paper's, kn_p = 470 kN/m and mu_pp = 0.33
+// (rho_p = 1230 kg/m^3, Table 1 otherwise), the way a lab would report it: five
+// realisations of that truth, the curve of the one nearest their mean, their scatter as the uncertainties of c1 and c2 and
 // the correlation of their errors (tests/integration/compression_truth.hpp). Every run,
 // truth and design, loads one settled sample (oedometer.packing_file, seed 1), so a run is
 // the loading alone (~22 s with two threads) and the design runs see the same packing as the
