@@ -35,9 +35,11 @@
 #                    to reach it); patches of spheres farther than PATCH_RANGE_FACTOR R from
 #                    the surface, or from the cylinder's axial range, are parked far away.
 #                    An active patch whose sphere is beyond an end waits at that end, at the
-#                    sphere's azimuth, PATCH_RIM_GAP_FACTOR R outside the surface: out of
-#                    reach of the sphere, but close enough that the collider's bounds (grown
-#                    by verletDist) keep the pair, so the contact starts in the step the
+#                    sphere's azimuth, PATCH_RIM_GAP_FACTOR R outside the surface (or outside
+#                    the sphere, if it pokes through the surface's extension): at least
+#                    1.25 R from the centre, out of the sphere's reach, but close enough that
+#                    the collider's bounds (grown by verletDist, 0.5 R_min by default: so for
+#                    R < 2 R_min) keep the pair, so the contact starts in the step the
 #                    centre enters the range. (Teleported there from the far parking place,
 #                    the patch was only seen at the collider's next run: one step late.)
 #                    geom.facetCylinder is not used: a polygon of triangles changes the
@@ -71,8 +73,8 @@ PATCH_RANGE_FACTOR = 1.0      # a sphere gets an active cylinder patch when its 
 PATCH_REFRESH_STEPS = 20      # steps between re-evaluations of which spheres have an active patch
 PARK_DISTANCE = 1.0e3         # m, where inactive patches wait (each at its own spot)
 PATCH_RIM_GAP_FACTOR = 0.25   # an active patch of a sphere beyond an end waits this x R outside
-                              # the surface: the sphere would need an overlap of 0.25 R to touch
-                              # it; within verletDist (0.5 R_min by default) of where it goes next
+                              # the surface (or the sphere): within verletDist (0.5 R_min by
+                              # default) of where it goes when the sphere enters the range
 
 # Group masks: spheres collide with spheres, walls and patches; patches only with spheres;
 # walls only with spheres (avoidSelfInteractionMask stops wall-wall and patch-patch pairs).
@@ -384,9 +386,9 @@ class Model:
                         continue
                     active.add(i)
                 if not in_range:
-                    if rho > 0.0 and rho < rc:  # beyond an end, inside the surface: wait at the end
+                    if rho > 0.0:  # beyond an end: wait at the end, out of the sphere's reach
                         end = lo if axial < lo else hi
-                        s = (rc + PATCH_RIM_GAP_FACTOR * r) / rho
+                        s = (max(rc, rho + r) + PATCH_RIM_GAP_FACTOR * r) / rho
                         pst.pos = Vector3(o[0] + end * a[0] + s * qx, o[1] + end * a[1] + s * qy,
                                           o[2] + end * a[2] + s * qz)
                     else:

@@ -224,10 +224,13 @@ std::string calibration_report(const Problem& p, const CalibrationResult& r, con
        "parameters), J the surfaces' Jacobian at the solution; target uncertainty, the surfaces' residual "
        "standard error and (when measured) the realisation scatter the surfaces do not show are propagated "
        "separately and combined in quadrature.\n";
-  if (p.target_correlation.size() == 4)
+  if (p.target_correlation.size() == 4 && p.target_correlation(0, 1) != 0.0)
     o << "The measured " << p.targets[0].name << " and " << p.targets[1].name
       << " come from one fit, so their errors are taken as correlated (" << g(p.target_correlation(0, 1), 3)
       << "): the weights and the measurement's share of the uncertainty use the full covariance.\n";
+  else if (p.target_correlation.size() == 4)
+    o << "The errors of the measured " << p.targets[0].name << " and " << p.targets[1].name
+      << " are taken as independent (correlation 0, as the spec states).\n";
 
   const bool mean = r.scatter.size() && r.mode == "paper";
   o << "\n## Validation against the measured data\n\n| target | measured | surface at solution | DEM at solution"

@@ -28,12 +28,10 @@ Stepper::Stepper(PhysicsSettings physics)
 
 void Stepper::prepare(World& world) {
   rebuild_neighbours(world);
-  set_time_step(world, CountedContacts::kTouchingOrOverlapping);
+  update_time_step(world, CountedContacts::kTouchingOrOverlapping);
 }
 
-void Stepper::update_time_step(World& world) { set_time_step(world, CountedContacts::kTouching); }
-
-void Stepper::set_time_step(World& world, CountedContacts counted) {
+void Stepper::update_time_step(World& world, CountedContacts counted) {
   world.dt = physics_.time_step.automatic
                  ? physics_.time_step.safety_factor *
                        critical_time_step(world.particles, world.walls, world.contacts, pairs_, counted)

@@ -49,8 +49,9 @@ class Stepper {
   // Builds the candidate lists now: afterwards every pair closer than the skin is a candidate
   // (install_bonds needs that). No result depends on when the lists are built.
   void rebuild_neighbours(World& world);
-  // Sets world.dt from the settings, counting the contacts the last force pass marked.
-  void update_time_step(World& world);
+  // Sets world.dt from the settings, counting the contacts the last force pass marked, or
+  // also the pairs that overlap now (for a state no force pass has seen in full).
+  void update_time_step(World& world, CountedContacts counted = CountedContacts::kTouching);
   // Stored plus dissipated energies: constant (up to O(dt^2)) when the bookkeeping is complete.
   EnergySnapshot energy(const World& world) const { return measure_energy(world, physics_, pairs_); }
 
@@ -84,7 +85,6 @@ class Stepper {
 
  private:
   void compute_forces(World& world);
-  void set_time_step(World& world, CountedContacts counted);
   PhysicsSettings physics_;
   PairTable pairs_;
   NeighbourSearch neighbours_;

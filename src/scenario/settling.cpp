@@ -120,8 +120,10 @@ std::size_t install_bonds(World& world, Stepper& stepper, double gap) {
     }
   }
   // New contacts stiffen their spheres (k_i grows by kn + ks each), so the critical time step
-  // may have dropped: evaluate it now rather than at the next recompute_interval.
-  if (new_contacts > 0) stepper.update_time_step(world);
+  // may have dropped: evaluate it now rather than at the next recompute_interval. Overlaps
+  // count too: right after prepare() (a packing read from a file) no force pass has flagged
+  // the wall contacts, which the flags alone would leave out.
+  if (new_contacts > 0) stepper.update_time_step(world, CountedContacts::kTouchingOrOverlapping);
   return installed;
 }
 

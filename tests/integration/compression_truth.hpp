@@ -39,6 +39,7 @@ struct CompressionTruth {
 // oedometer.packing_file=..."), kn_p = kn, mu_pp = mu + k x 1e-6. Writes dir/measured.csv.
 inline CompressionTruth make_compression_truth(const std::filesystem::path& dir, const std::string& run_args, double kn,
                                                double mu, int realisations) {
+  if (realisations < 3) throw std::invalid_argument("a scatter and a correlation need at least 3 realisations");
   CompressionTruth t;
   for (int k = 0; k < realisations; ++k) {
     const auto out = dir / ("realisation-" + std::to_string(k));
@@ -58,7 +59,10 @@ inline CompressionTruth make_compression_truth(const std::filesystem::path& dir,
   }
   t.sd_c1 = std::sqrt(s11 / (n - 1.0));
   t.sd_c2 = std::sqrt(s22 / (n - 1.0));
+  if (!(s11 > 0.0 && s22 > 0.0)) throw std::runtime_error("the realisations of the truth gave identical c1 or c2");
   t.correlation = s12 / std::sqrt(s11 * s22);
+  if (!(1.0 - t.correlation * t.correlation > 1e-12))
+    throw std::runtime_error("c1 and c2 of the realisations lie on a line: no distance to their mean");
   // d^2 = (z1^2 - 2 r z1 z2 + z2^2) / (1 - r^2), z the standardised deviations.
   double best = std::numeric_limits<double>::infinity();
   for (int k = 0; k < realisations; ++k) {
