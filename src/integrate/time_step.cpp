@@ -5,6 +5,20 @@
 
 namespace colza {
 
+namespace {
+
+// Overlap now (un > 0, m), for pairs no force pass has flagged: two spheres, a sphere and a wall.
+bool spheres_overlap(const ParticleArrays& p, Index i, Index j) {
+  const double reach = p.radius[i] + p.radius[j];
+  return (p.position[j] - p.position[i]).squaredNorm() < reach * reach;
+}
+bool sphere_overlaps_wall(const ParticleArrays& p, Index i, const Wall& wall) {
+  const WallContactGeometry g = wall_sphere_geometry(wall, p.position[i], p.radius[i]);
+  return g.in_range && g.overlap > 0.0;
+}
+
+}  // namespace
+
 double critical_time_step(const ParticleArrays& p, const std::vector<Wall>& walls, const ContactStore& contacts,
                           const PairTable& pairs, CountedContacts counted) {
   const bool overlaps_count = counted == CountedContacts::kTouchingOrOverlapping;
@@ -13,9 +27,7 @@ double critical_time_step(const ParticleArrays& p, const std::vector<Wall>& wall
   const auto& pp = contacts.particle_pairs;
   for (std::size_t c = 0; c < pp.size(); ++c) {
     const Index i = pp.first[c], j = pp.second[c];
-    const double reach = p.radius[i] + p.radius[j];
-    if (!pp.history[c].touching && !(overlaps_count && (p.position[j] - p.position[i]).squaredNorm() < reach * reach))
-      continue;
+    if (!pp.history[c].touching && !(overlaps_count && spheres_overlap(p, i, j))) continue;
     const PairParameters& q = pairs.particle_particle(p.material[i], p.material[j]);
     k_trans[i] += q.kn + q.ks;
     k_trans[j] += q.kn + q.ks;
@@ -25,11 +37,7 @@ double critical_time_step(const ParticleArrays& p, const std::vector<Wall>& wall
   const auto& pw = contacts.wall_pairs;
   for (std::size_t c = 0; c < pw.size(); ++c) {
     const Index i = pw.particle[c];
-    if (!pw.history[c].touching) {
-      if (!overlaps_count) continue;
-      const WallContactGeometry g = wall_sphere_geometry(walls[pw.wall[c]], p.position[i], p.radius[i]);
-      if (!(g.in_range && g.overlap > 0.0)) continue;
-    }
+    if (!pw.history[c].touching && !(overlaps_count && sphere_overlaps_wall(p, i, walls[pw.wall[c]]))) continue;
     const PairParameters& q = pairs.particle_wall(p.material[i], walls[pw.wall[c]].material);
     k_trans[i] += q.kn + q.ks;
     k_shear[i] += q.ks;
