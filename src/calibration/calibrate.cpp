@@ -328,10 +328,20 @@ void validate_problem(const Problem& p, bool sequential) {
     throw CalibrationError("targets", "fewer targets (" + std::to_string(p.targets.size()) + ") than parameters (" +
                                           std::to_string(p.parameters.size()) + "): the parameters are not determined");
   const auto& pts = sequential ? p.sequential_start : p.design;
-  for (const auto& x : pts)
+  const std::string points_key = sequential ? "sequential.start" : "design";
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    const Eigen::VectorXd& x = pts[k];
     if (x.size() != static_cast<Eigen::Index>(p.parameters.size()))
-      throw CalibrationError("design", "a design point has " + std::to_string(x.size()) + " values for " +
-                                           std::to_string(p.parameters.size()) + " parameters");
+      throw CalibrationError(points_key, "a design point has " + std::to_string(x.size()) + " values for " +
+                                             std::to_string(p.parameters.size()) + " parameters");
+    // Outside the bounds, a start point could become the best run and invert the trust region.
+    if ((x.array() < p.lower().array()).any() || (x.array() > p.upper().array()).any())
+      throw CalibrationError(points_key, "point " + std::to_string(k + 1) + " lies outside the parameters' bounds");
+    // A repeated point is the same run counted twice: a fit with a degree of freedom it has not.
+    for (std::size_t l = 0; l < k; ++l)
+      if (pts[l] == x)
+        throw CalibrationError(points_key, "point " + std::to_string(k + 1) + " repeats point " + std::to_string(l + 1));
+  }
   const std::size_t need = p.parameters.size() + 1;
   if (!sequential && p.design.size() < need)
     throw CalibrationError("design", "too few design points for a plane in " + std::to_string(p.parameters.size()) +
@@ -544,6 +554,32 @@ CalibrationResult calibrate_paper(const Problem& p, const ForwardModel& model, c
   return r;
 }
 
+namespace {
+
+// Planes (one per target) through the runs of `pool` nearest run `best` (scaled distance):
+// the n + 2 nearest, a plane's n + 1 terms with one residual degree of freedom (all of them
+// when fewer), more if those do not determine a plane. `used` receives the runs fitted.
+std::vector<ResponseSurface> local_planes(const Problem& p, const std::vector<Run>& runs,
+                                          const std::vector<std::size_t>& pool, std::size_t best,
+                                          const ParameterScaling& sc, std::vector<std::size_t>& used) {
+  const std::size_t neighbours = p.parameters.size() + 2;
+  std::vector<std::size_t> order = pool;
+  const Eigen::VectorXd ub = sc.to_unit(runs[best].x);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return (sc.to_unit(runs[a].x) - ub).norm() < (sc.to_unit(runs[b].x) - ub).norm();
+  });
+  for (std::size_t k = std::min(order.size(), neighbours); k <= order.size(); ++k) {
+    used.assign(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k));
+    try {
+      return fit_surfaces(p, runs, used, SurfaceKind::kPlane);
+    } catch (const CalibrationError&) {
+    }
+  }
+  throw CalibrationError("sequential.start", "the start points do not determine a plane: they must not be collinear");
+}
+
+}  // namespace
+
 CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& model, const LoopOptions& opt) {
   validate_problem(p, true);
   require_replicate_model(p, opt);
@@ -585,28 +621,11 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
   for (std::size_t k : pool)
     if (misfit(k) < misfit(best)) best = k;
   double radius = 0.5;  // trust-region half width in scaled units (1 = half the range)
-  const std::size_t neighbours = n + 2;  // plane (n + 1 terms) with one residual degree of freedom
   int iteration = 0;
   while (misfit(best) > 1.0 && static_cast<int>(pool.size()) < p.max_runs) {
     ++iteration;
-    // The points nearest the current best (scaled distance); more if they do not determine a plane.
-    std::vector<std::size_t> order = pool;
-    const Eigen::VectorXd ub = sc.to_unit(r.runs[best].x);
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return (sc.to_unit(r.runs[a].x) - ub).norm() < (sc.to_unit(r.runs[b].x) - ub).norm();
-    });
-    std::vector<ResponseSurface> s;
     std::vector<std::size_t> idx;
-    for (std::size_t k = std::min(order.size(), neighbours); k <= order.size(); ++k) {
-      idx.assign(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k));
-      try {
-        s = fit_surfaces(p, r.runs, idx, SurfaceKind::kPlane);
-        break;
-      } catch (const CalibrationError&) {
-        s.clear();
-      }
-    }
-    if (s.empty()) throw CalibrationError("sequential.start", "the start points do not determine a plane: they must not be collinear");
+    const std::vector<ResponseSurface> s = local_planes(p, r.runs, pool, best, sc, idx);
     const Eigen::VectorXd tlo = lo.cwiseMax(r.runs[best].x - radius * sc.half);
     const Eigen::VectorXd thi = hi.cwiseMin(r.runs[best].x + radius * sc.half);
     Eigen::VectorXd x = round_point(solve_on_surfaces(s, p, tlo, thi, {r.runs[best].x}, false));
@@ -637,10 +656,11 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
   }
   r.iterations = iteration;
   r.solution = r.runs[best].x;
-  if (r.surfaces.empty()) {  // converged on the start design: fit it for the uncertainty
-    r.surfaces = fit_surfaces(p, r.runs, pool, SurfaceKind::kPlane);
-    r.surface_points = pool;
-  }
+  // The uncertainty comes from planes through the runs nearest the solution, the last run
+  // included (the loop's planes were fitted before it): with n + 2 runs or more they have a
+  // residual degree of freedom, so their error enters the uncertainty.
+  r.surfaces = local_planes(p, r.runs, pool, best, sc, r.surface_points);
+  surface_warnings(p, r.surfaces, r.warnings);
   r.runs[best].role = r.runs[best].role == "design" ? "design+validation" : "validation";
   propagate_uncertainty(p, r.surfaces, r);
   determination_warnings(p, r);

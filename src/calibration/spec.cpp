@@ -34,6 +34,13 @@ namespace {
 
 std::string fmt(double v) { return format_significant(v, 6); }
 
+// "(350000, 0.3)": a design point as the user wrote it.
+std::string point_text(const Eigen::VectorXd& x) {
+  std::string t = "(";
+  for (Eigen::Index j = 0; j < x.size(); ++j) t += (j ? ", " : "") + format_shortest(x[j]);
+  return t + ")";
+}
+
 // Small typed access to one table of the spec, with unknown-key rejection.
 struct Node {
   const std::string& file;
@@ -128,14 +135,16 @@ std::string resolve(const std::string& spec_file, const std::string& value) {
 // "" when the model config loads with `key` = `value` added to the spec's overrides, else
 // why not ("the model does not accept particle.density = -1200: must be positive, ...").
 std::string model_rejects(const Spec& s, Scenario scenario, const std::string& key, double value) {
+  // The value exactly as a run would be given it: rounded to 6 digits, a bound just past a
+  // model limit (0.9990001 for a limit of 0.999) would pass here and be refused mid-calibration.
   std::vector<std::string> set = s.model_set;
-  set.push_back(key + "=" + fmt(value));
+  set.push_back(key + "=" + format_shortest(value));
   try {
     load_run_config(scenario, s.model_config, set);
   } catch (const ConfigError& e) {
     // The key that objected, when another than the parameter's (a limit between two keys).
     const std::string other = e.key().empty() || e.key() == key ? "" : "key '" + e.key() + "': ";
-    return "the model does not accept " + key + " = " + fmt(value) + ": " + other + e.reason();
+    return "the model does not accept " + key + " = " + format_shortest(value) + ": " + other + e.reason();
   }
   return "";
 }
@@ -195,6 +204,10 @@ Spec read_spec(const std::string& path) {
     const Node n{path, t, "parameters[" + std::to_string(j) + "]", {}};
     Parameter par;
     par.key = n.string("key", "", true);
+    for (std::size_t i = 0; i < p.parameters.size(); ++i)
+      if (p.parameters[i].key == par.key)
+        n.fail("key", "repeats parameters[" + std::to_string(i) + "]'s key " + par.key +
+                          ": a run sets a key once, so one of the two parameters would do nothing");
     par.name = n.string("name", par.key);
     par.unit = n.string("unit", "");
     std::vector<double> d = n.numbers("design");
@@ -239,6 +252,13 @@ Spec read_spec(const std::string& path) {
     for (std::size_t j = 0; j < np; ++j) x[j] = columns[j][k];
     p.design.push_back(x);
   }
+  for (std::size_t k = 0; k < p.design.size(); ++k)
+    for (std::size_t l = 0; l < k; ++l)
+      if (p.design[k] == p.design[l])
+        root.fail("parameters", "design point " + std::to_string(k + 1) + " " + point_text(p.design[k]) +
+                                    " repeats design point " + std::to_string(l + 1) +
+                                    ": a run at the same point and seed is the same run, so it would count twice in "
+                                    "the fit; to measure the scatter between realisations, use [scatter] replicates");
   if (p.design.size() < np + 1)
     root.fail("parameters", "too few design points for the surrogate: " + std::to_string(p.design.size()) +
                                 " given, a plane in " + std::to_string(np) + " parameter(s) needs at least " +
@@ -268,9 +288,18 @@ Spec read_spec(const std::string& path) {
         auto v = (*r)[j].value<double>();
         if (!v) seq.fail("start", "points must be numbers");
         x[j] = *v;
-        if (const std::string why = model_rejects(s, scenario, p.parameters[j].key, x[j]); !why.empty())
-          seq.fail("start", "point " + std::to_string(p.sequential_start.size() + 1) + ": " + why);
+        const Parameter& par = p.parameters[j];
+        const std::string point = "point " + std::to_string(p.sequential_start.size() + 1);
+        if (const std::string why = model_rejects(s, scenario, par.key, x[j]); !why.empty())
+          seq.fail("start", point + ": " + why);
+        if (x[j] < par.lower || x[j] > par.upper)
+          seq.fail("start", point + ": " + par.name + " = " + format_shortest(x[j]) + " is outside [" +
+                                fmt(par.lower) + ", " + fmt(par.upper) + "], the bounds the refinement keeps to");
       }
+      for (std::size_t l = 0; l < p.sequential_start.size(); ++l)
+        if (p.sequential_start[l] == x)
+          seq.fail("start", "point " + std::to_string(p.sequential_start.size() + 1) + " repeats point " +
+                                std::to_string(l + 1) + ": the start points must span a plane");
       p.sequential_start.push_back(x);
     }
     if (p.sequential_start.size() < np + 1)

@@ -279,6 +279,29 @@ TEST_F(CalibrateCompression, BadSpecValuesAndOutputFoldersAreRefusedBeforeAnyRun
   bad = spec;
   bad.replace(bad.find("max_runs = 10"), 13, "max_runs = 10.5");
   refused("fractional-max-runs", bad, "", {"sequential.max_runs", "whole number"});
+  // A start point outside the bounds (the design's range, 0.2-0.4), and a repeated one.
+  bad = spec;
+  bad.replace(bad.find("max_runs = 10"), 13, "max_runs = 10\nstart = [[400e3, 0.3], [450e3, 0.45], [400e3, 0.4]]");
+  refused("start-outside", bad, "--mode sequential", {"sequential.start", "point 2", "mu_pp = 0.45 is outside [0.2, 0.4]"});
+  bad = spec;
+  bad.replace(bad.find("max_runs = 10"), 13, "max_runs = 10\nstart = [[400e3, 0.3], [450e3, 0.3], [400e3, 0.3]]");
+  refused("start-repeated", bad, "--mode sequential", {"sequential.start", "point 3 repeats point 1"});
+  // A repeated design point: the same run at the same seed, which would count twice in the
+  // fit (and, run side by side with --jobs 2, would share its staging folder).
+  bad = spec;
+  bad.replace(bad.find("[350e3, 450e3, 450e3, 450e3, 550e3]"), 35, "[350e3, 450e3, 450e3, 450e3, 350e3]");
+  refused("repeated-design-point", bad, "--jobs 2",
+          {"key 'parameters'", "design point 5 (350000, 0.3) repeats design point 1", "[scatter] replicates"});
+  // Two parameters setting one key: the second would override the first.
+  bad = spec;
+  bad.replace(bad.find("particle.friction"), 17, "particle.normal_stiffness");
+  refused("repeated-key", bad, "", {"parameters[1].key", "repeats parameters[0]'s key particle.normal_stiffness"});
+  // A bound the model refuses only past the 6th digit (integration.damping must be <= 0.999): the
+  // check reads the value as a run would be given it, not rounded.
+  bad = spec;
+  bad.replace(bad.find("particle.friction"), 17, "integration.damping");
+  bad.replace(bad.find("design = [0.3, 0.2"), 0, "upper = 0.9990001\n");
+  refused("bound-past-a-limit", bad, "", {"parameters[1].upper", "does not accept integration.damping = 0.9990001"});
   // A correlation of c1 and c2 that is no correlation.
   bad = spec;
   bad.replace(bad.find("correlation = "), 14, "correlation = 1.0\n#");

@@ -6,6 +6,7 @@
 // that unreachable targets and too-small designs are errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <functional>
@@ -228,6 +229,48 @@ TEST(CalibrationIdentity, TargetsReachableAloneButNotTogetherSaySo) {
   EXPECT_NE(m.find("misses cohesion = "), std::string::npos) << m;
   EXPECT_NE(m.find("; tan_phi = "), std::string::npos) << m;
   EXPECT_EQ(m.find("is outside what the design can reach"), std::string::npos) << m;
+}
+
+TEST(CalibrationIdentity, SequentialUncertaintyComesFromPlanesThroughItsLastRun) {
+  // The curved model, a loose tolerance: the default start (centre and a quarter range along
+  // each parameter, 3 runs) misses, and a refinement or two hit. The planes the uncertainty
+  // comes from go through the solution's run and have a residual degree of freedom (the
+  // loop's last planes were fitted before that run; on the 3 start points they had none).
+  const Eigen::Vector2d truth(470e3, 0.33);
+  const Eigen::VectorXd t = curved_model(truth);
+  Problem p = compression_problem(t, Eigen::Vector2d(0.03 * std::abs(t[0]), 0.03 * t[1]));
+  const CalibrationResult seq = calibrate_sequential(p, curved_model, {});
+  ASSERT_TRUE(seq.within_uncertainty);
+  ASSERT_GT(seq.runs.size(), 3u);
+  const std::size_t last = seq.runs.size() - 1;
+  EXPECT_NE(std::find(seq.surface_points.begin(), seq.surface_points.end(), last), seq.surface_points.end());
+  for (const auto& s : seq.surfaces) EXPECT_EQ(s.degrees_of_freedom(), 1);
+  for (const auto& w : seq.warnings) EXPECT_EQ(w.find("no residual degree of freedom"), std::string::npos) << w;
+}
+
+TEST(CalibrationIdentity, SequentialStopOnTheStartDesignSaysItsPlanesHaveNoResidual) {
+  // Targets made at the centre of the range, the first start point: the search stops on
+  // the start design, whose 3 points a plane in 2 parameters passes through exactly.
+  Problem p = compression_problem(kA * Eigen::Vector2d(450e3, 0.35) + kB, Eigen::Vector2d(1e4, 2e6));
+  const CalibrationResult seq = calibrate_sequential(p, linear_model, {});
+  EXPECT_EQ(seq.runs.size(), 3u);
+  bool warned = false;
+  for (const auto& w : seq.warnings) warned = warned || w.find("no residual degree of freedom") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
+TEST(CalibrationIdentity, RepeatedOrOutOfBoundsPointsAreErrors) {
+  Problem p = compression_problem(kA * Eigen::Vector2d(400e3, 0.3) + kB, Eigen::Vector2d(1e4, 2e6));
+  p.design.push_back(p.design[2]);  // the same run twice would count as two in the fit
+  EXPECT_THROW(validate_problem(p, false), CalibrationError);
+  p.design.pop_back();
+  p.sequential_start = {Eigen::Vector2d(400e3, 0.3), Eigen::Vector2d(450e3, 0.3), Eigen::Vector2d(400e3, 0.6)};
+  try {
+    validate_problem(p, true);  // mu_pp 0.6 is above its bound 0.5
+    ADD_FAILURE() << "a start point outside the bounds was accepted";
+  } catch (const CalibrationError& e) {
+    EXPECT_EQ(e.key(), "sequential.start");
+  }
 }
 
 TEST(CalibrationIdentity, TooFewOrDegenerateDesignPointsAreErrors) {
