@@ -216,6 +216,8 @@ int calibrate_command(const CalibrateOptions& opt) {
   {
     std::ofstream md(staging.path("report.md"));
     md << calibration_report(spec.problem, result, ctx);
+    md.close();  // a full disk shows at the flush: a cut report is never committed
+    if (!md) throw std::runtime_error("cannot write " + staging.path("report.md"));
   }
   staging.commit();
 

@@ -16,6 +16,7 @@
 #include "cli/run_commands.hpp"
 #include "core/interrupt.hpp"
 #include "core/version.hpp"
+#include "io/hdf5_writer.hpp"
 
 namespace {
 
@@ -155,6 +156,10 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "colza: %s: stopped; the unfinished outputs were removed, earlier results are untouched\n",
                  e.what());
     return 128 + e.signal_number();
+  } catch (const colza::Hdf5WriteError& e) {  // a full disk, say: not colza's fault
+    std::fprintf(stderr, "colza: error: %s; the unfinished outputs were removed, earlier results are untouched\n",
+                 e.what());
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "colza: internal error: %s\n", e.what());
     return 1;

@@ -5,9 +5,12 @@
 //   /curve            one 1-D dataset per recorded column (SI units, see curve.csv)
 //   /particles/<tag>  position (N x 3), velocity (N x 3), angular_velocity (N x 3), radius (N)
 // Groups and datasets carry no creation or modification times, so equal results give equal
-// files, byte for byte.
+// files, byte for byte. The file format is HDF5 1.8's or later (read by any HDF5 >= 1.8 and
+// h5py), whose dense attribute storage holds a config_toml longer than 64 KiB (a scene
+// listing a thousand particles inline); the 1.6 format refuses such an attribute.
 #pragma once
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include "core/particles.hpp"
 #include "io/table.hpp"
@@ -17,6 +20,13 @@ namespace H5 { class H5File; }
 namespace colza {
 
 inline constexpr int kResultSchemaVersion = 1;
+
+// Any failure of the HDF5 library while writing (a full disk, say), with the file and the
+// failing call: HDF5's own exceptions do not derive from std::exception.
+class Hdf5WriteError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 class Hdf5Writer {
  public:
@@ -30,6 +40,9 @@ class Hdf5Writer {
   void close();
 
  private:
+  template <class Body>
+  void translating_errors(Body&& body);  // runs body, HDF5's exceptions as Hdf5WriteError
+  std::string name_;
   std::unique_ptr<H5::H5File> file_;
 };
 

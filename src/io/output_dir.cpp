@@ -104,6 +104,7 @@ void write_text_atomically(const fs::path& file, const std::string& text) {
   write_atomically(file, [&](const std::string& tmp) {
     std::ofstream o(tmp);
     o << text;
+    o.close();  // the last buffer is written here: check after it
     if (!o) throw std::runtime_error("cannot write " + tmp);
   });
 }

@@ -22,6 +22,7 @@ void write_json(const std::string& file, const nlohmann::json& value) {
   std::ofstream out(file);
   if (!out) throw std::runtime_error("cannot write " + file);
   out << value.dump(2) << '\n';
+  out.close();  // the last buffer is written here: check after it
   if (!out) throw std::runtime_error("cannot write " + file);
 }
 

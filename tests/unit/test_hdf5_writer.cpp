@@ -75,12 +75,48 @@ TEST(Hdf5Writer, WritesWhatReadsBackAndNoTimes) {
   std::int64_t seed = 0;
   f.openAttribute("seed").read(H5::PredType::NATIVE_INT64, &seed);
   EXPECT_EQ(seed, 7);
-  for (const char* path : {"/curve", "/curve/time", "/particles", "/particles/final", "/particles/final/velocity"}) {
+  for (const char* path : {"/", "/curve", "/curve/time", "/particles", "/particles/final", "/particles/final/velocity"}) {
     const H5O_info_t info = times_of(f, path);
     EXPECT_EQ(info.ctime, 0) << path;
     EXPECT_EQ(info.mtime, 0) << path;
     EXPECT_EQ(info.btime, 0) << path;
   }
+}
+
+TEST(Hdf5Writer, AConfigLongerThan64KiBIsKept) {
+  // A scene listing ~1500 particles inline has a config of ~115 KB; HDF5's 1.6 file format
+  // cannot hold an attribute over 64 KiB in an object header (colza aborted there after the run).
+  const colza::testing::ScratchDir dir;
+  const auto file = dir / "result.h5";
+  std::string config;
+  while (config.size() < 200000) config += "[[scene.particles]]\nposition = [0.01, 0.02, 0.03]\nradius = 0.003\n";
+  {
+    Hdf5Writer h5(file.string());
+    write_provenance(h5, "scene", 1, config);
+    h5.close();
+  }
+  const H5::H5File f(file.string(), H5F_ACC_RDONLY);
+  H5::Attribute a = f.openAttribute("config_toml");
+  std::string read_back;
+  a.read(a.getStrType(), read_back);
+  EXPECT_EQ(read_back, config);
+}
+
+TEST(Hdf5Writer, AnHdf5FailureIsAnErrorNamingTheFileNotAnAbort) {
+  // HDF5's C++ exceptions do not derive from std::exception; the writer turns them into
+  // Hdf5WriteError, which the CLI reports (exit 1) after removing its staging folder.
+  const colza::testing::ScratchDir dir;
+  const std::string file = (dir / "no-such-folder" / "result.h5").string();
+  H5::Exception::dontPrint();
+  try {
+    Hdf5Writer h5(file);
+    ADD_FAILURE() << "a file in a missing folder was created";
+  } catch (const Hdf5WriteError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot write " + file), std::string::npos) << e.what();
+  }
+  Hdf5Writer h5((dir / "result.h5").string());
+  h5.attribute("seed", std::int64_t{1});
+  EXPECT_THROW(h5.attribute("seed", std::int64_t{2}), Hdf5WriteError);  // an attribute written twice
 }
 
 TEST(Hdf5Writer, EveryRecordedCurveHasAUnitPerColumn) {
