@@ -15,6 +15,7 @@
 #include "cli/calibrate_command.hpp"
 #include "cli/run_commands.hpp"
 #include "core/interrupt.hpp"
+#include "core/unstable_motion.hpp"
 #include "core/version.hpp"
 #include "io/hdf5_writer.hpp"
 
@@ -156,6 +157,10 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "colza: %s: stopped; the unfinished outputs were removed, earlier results are untouched\n",
                  e.what());
     return 128 + e.signal_number();
+  } catch (const colza::UnstableMotion& e) {  // a time step above the critical one, say
+    std::fprintf(stderr, "colza: error: %s; the unfinished outputs were removed, earlier results are untouched\n",
+                 e.what());
+    return 1;
   } catch (const colza::Hdf5WriteError& e) {  // a full disk, say: not colza's fault
     std::fprintf(stderr, "colza: error: %s; the unfinished outputs were removed, earlier results are untouched\n",
                  e.what());

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <type_traits>
 #include <variant>
 
@@ -11,6 +12,7 @@
 
 #include "contact/contact_law.hpp"
 #include "core/interrupt.hpp"
+#include "core/unstable_motion.hpp"
 #include "engine/force_outputs.hpp"
 #include "engine/force_partition.hpp"
 #include "engine/pair_batch.hpp"
@@ -27,8 +29,26 @@ Stepper::Stepper(PhysicsSettings physics)
       neighbours_(physics_.skin) {}
 
 void Stepper::prepare(World& world) {
+  require_finite_positions(world);
   rebuild_neighbours(world);
   update_time_step(world, CountedContacts::kTouchingOrOverlapping);
+  critical_dt_at_prepare_ = critical_time_step(world.particles, world.walls, world.contacts, pairs_,
+                                               CountedContacts::kTouchingOrOverlapping);
+}
+
+void Stepper::require_finite_positions(const World& world) const {
+  const std::optional<std::size_t> i = first_non_finite_position(world.particles);
+  if (!i) return;
+  const TimeStepSettings& ts = physics_.time_step;
+  char text[640];
+  std::snprintf(text, sizeof text,
+                "the motion became unstable: particle %zu has a non-finite position at step %llu (t = %.6g s). The "
+                "time step is %.6g s (%s) against a critical estimate of %.6g s at the start of the stage; %s",
+                *i, static_cast<unsigned long long>(world.step), world.time, world.dt,
+                ts.automatic ? "automatic" : "fixed by integration.time_step", critical_dt_at_prepare_,
+                ts.automatic ? "lower integration.safety_factor, or check the stiffnesses, densities and radii"
+                             : "lower integration.time_step below the critical estimate");
+  throw UnstableMotion(text);
 }
 
 void Stepper::update_time_step(World& world, CountedContacts counted) {
@@ -326,8 +346,11 @@ void Stepper::begin_step(World& world) {
   if (physics_.time_step.automatic && physics_.time_step.recompute_interval > 0 &&
       world.step % physics_.time_step.recompute_interval == 0 && time_step_set_at_ != world.step)
     update_time_step(world);
-  if (neighbours_.needs_rebuild(world.particles, world.walls))
+  if (world.step % kFiniteCheckInterval == 0) require_finite_positions(world);  // a NaN never asks for a rebuild
+  if (neighbours_.needs_rebuild(world.particles, world.walls)) {
+    require_finite_positions(world);  // the cell grid cannot index a non-finite coordinate
     neighbours_.rebuild(world.particles, world.walls, world.contacts, worker_threads());
+  }
   compute_forces(world);
 }
 

@@ -24,7 +24,11 @@ class Stepper {
   // Forces a neighbour rebuild and sets world.dt from the settings (fixed, or the critical
   // estimate counting the pairs that overlap now as contacts: no force pass has marked them
   // yet). The periodic re-evaluation does not repeat it at the same step.
+  // Steps check that positions are finite (every kFiniteCheckInterval steps and before each
+  // neighbour rebuild) and throw UnstableMotion (engine/unstable_motion.hpp) naming the
+  // particle, dt and the critical estimate of the last prepare() when they are not.
   void prepare(World& world);
+  static constexpr std::uint64_t kFiniteCheckInterval = 100;
   void step(World& world) {
     begin_step(world);
     finish_step(world);
@@ -55,6 +59,8 @@ class Stepper {
   // Stored plus dissipated energies: constant (up to O(dt^2)) when the bookkeeping is complete.
   EnergySnapshot energy(const World& world) const { return measure_energy(world, physics_, pairs_); }
 
+  // The critical time step estimate (no safety factor, s) when prepare() was last called.
+  double critical_time_step_at_prepare() const { return critical_dt_at_prepare_; }
   const PhysicsSettings& physics() const { return physics_; }
   const PairTable& pairs() const { return pairs_; }
   const IntegrationReport& last_integration() const { return last_integration_; }
@@ -85,6 +91,7 @@ class Stepper {
 
  private:
   void compute_forces(World& world);
+  void require_finite_positions(const World& world) const;
   PhysicsSettings physics_;
   PairTable pairs_;
   NeighbourSearch neighbours_;
@@ -92,6 +99,7 @@ class Stepper {
   IntegrationSums sums_;
   BetweenHalves between_halves_ = BetweenHalves::kParticles;
   std::optional<std::uint64_t> time_step_set_at_;  // world.step at which dt was last set
+  double critical_dt_at_prepare_ = 0.0;  // s, the critical estimate (no safety factor) at prepare()
   bool integrated_with_forces_ = false;  // this step's motion was done by the threaded force loop
   EnergyLedger ledger_;
   ContactEvents events_;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/unstable_motion.hpp"
+
 namespace colza {
 
 namespace {
@@ -70,9 +72,18 @@ void NeighbourSearch::build_particle_pairs(const ParticleArrays& particles, int 
     hi = hi.cwiseMax(particles.position[i]);
     r_max = std::max(r_max, particles.radius[i]);
   }
-  const double cell = 2.0 * r_max + skin_;
+  // At most ~8 cells per particle: particles spread far apart (a few escaped from a box, or
+  // a motion blowing up through huge coordinates) would otherwise ask for more cells than
+  // memory holds. Wider cells give the same list (partners are sorted), only a longer search.
+  const double extent = (hi - lo).maxCoeff();
+  if (!std::isfinite(extent))
+    throw UnstableMotion("the particles' positions span more than the largest double: the motion became unstable");
+  const double max_cells = 8.0 * static_cast<double>(n) + 4096.0;
+  auto cells_per_axis = [&](double c, int d) { return std::floor((hi[d] - lo[d]) / c) + 1.0; };
+  double cell = 2.0 * r_max + skin_;
+  while (cells_per_axis(cell, 0) * cells_per_axis(cell, 1) * cells_per_axis(cell, 2) > max_cells) cell *= 2.0;
   int dims[3];
-  for (int d = 0; d < 3; ++d) dims[d] = std::max(1, static_cast<int>((hi[d] - lo[d]) / cell) + 1);
+  for (int d = 0; d < 3; ++d) dims[d] = static_cast<int>(cells_per_axis(cell, d));
   const std::size_t n_cells = static_cast<std::size_t>(dims[0]) * dims[1] * dims[2];
   auto cell_coord = [&](const Vec3& x, int d) {
     return std::min(dims[d] - 1, static_cast<int>((x[d] - lo[d]) / cell));

@@ -79,7 +79,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   r.particles = world.particles.size();
   r.stages.push_back(prep_clock.finish());
   if (r.particles == 0)
-    throw ConfigError(c.source, "sample.count", "no sphere is left below the rim after settling");
+    throw no_sphere_left_error(c, stepper, "below the rim");
 
   // --- piston at the top of the packing ------------------------------------------
   double top = 0.0;

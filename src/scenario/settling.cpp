@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/format_number.hpp"
 #include "neighbour/spatial_order.hpp"
 
 namespace colza {
@@ -125,6 +126,17 @@ std::size_t install_bonds(World& world, Stepper& stepper, double gap) {
   // the wall contacts, which the flags alone would leave out.
   if (new_contacts > 0) stepper.update_time_step(world, CountedContacts::kTouchingOrOverlapping);
   return installed;
+}
+
+ConfigError no_sphere_left_error(const RunConfig& c, const Stepper& stepper, const std::string& where) {
+  const double critical = stepper.critical_time_step_at_prepare();
+  if (!c.integration.automatic_time_step && c.integration.time_step > critical)
+    return ConfigError(c.source, "integration.time_step",
+                       "no sphere is left " + where + " after settling: the fixed time step " +
+                           format_significant(c.integration.time_step, 6) + " s exceeds the critical estimate " +
+                           format_significant(critical, 6) +
+                           " s, so the motion blew up and the spheres flew off; use \"auto\" or a smaller step");
+  return ConfigError(c.source, "sample.count", "no sphere is left " + where + " after settling");
 }
 
 }  // namespace colza

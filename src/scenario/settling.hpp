@@ -2,6 +2,7 @@
 // settling under gravity to a mean unbalanced force, discarding spheres above a rim,
 // and installing contact bonds at a chosen moment.
 #pragma once
+#include "config/config_error.hpp"
 #include "config/run_config.hpp"
 #include "engine/stepper.hpp"
 #include "io/progress.hpp"
@@ -26,6 +27,12 @@ SettleResult settle(World& world, Stepper& stepper, double threshold, double max
 // gravity to the [sample] criterion (settle_unbalanced_force, settle_max_time,
 // settle_check_interval) without an energy ledger (none is reported for settling).
 SettleResult settle_generated_sample(World& world, Stepper& stepper, const SampleSpec& sample, Progress& progress);
+
+// The error for a sample with no sphere left in its container after settling (`where`:
+// "below the rim"). With a fixed time step above the critical estimate of the stage's start
+// the motion blew up and the spheres flew off, so it names integration.time_step; otherwise
+// sample.count.
+ConfigError no_sphere_left_error(const RunConfig& c, const Stepper& stepper, const std::string& where);
 
 // Removes the spheres whose top (z + r) lies above `z_top`; their contacts go with them.
 // Returns the number removed.

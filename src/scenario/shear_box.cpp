@@ -78,7 +78,7 @@ ShearSample prepare_shear_sample(const RunConfig& c, Progress& progress) {
   discard_above(world, stepper, b.height);
   store_in_space_order(world, stepper);
   s.stages.push_back(clock.finish());
-  if (world.particles.size() == 0) throw ConfigError(c.source, "sample.count", "no sphere is left below the box top");
+  if (world.particles.size() == 0) throw no_sphere_left_error(c, stepper, "below the box top");
   // The sample handed on is at rest, exactly as if read back from its packing file.
   for (std::size_t i = 0; i < world.particles.size(); ++i)
     s.particles.add(world.particles.position[i], world.particles.radius[i], c.particle.density);

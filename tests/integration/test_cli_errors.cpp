@@ -66,6 +66,18 @@ TEST(CliErrors, MissingConfigAndPackingFiles) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+TEST(CliErrors, AFixedTimeStepThatBlowsTheSampleApartNamesTheTimeStep) {
+  // 1 ms against a critical estimate of ~23 us (small sample, Table 1 stiffnesses): the
+  // spheres fly off during settling. The error names integration.time_step, not sample.count.
+  const fs::path out = scratch_dir("blown-apart");
+  const CliResult r = run_colza("run oedometer --quiet --config " + kConfig +
+                                " --set integration.time_step=1e-3 --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("key 'integration.time_step'"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("exceeds the critical estimate"), std::string::npos) << r.stderr_text;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(CliErrors, ExistingResultIsKeptWithoutForceAndAfterAFailedRun) {
   const fs::path out = scratch_dir("existing-result");
   fs::create_directories(out);

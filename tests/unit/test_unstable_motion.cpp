@@ -1,0 +1,86 @@
+// A motion that blows up stops with a clear error (core/unstable_motion.hpp), and spheres
+// far apart do not make the neighbour grid ask for more cells than memory holds.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/unstable_motion.hpp"
+#include "engine/stepper.hpp"
+
+using namespace colza;
+
+namespace {
+
+PhysicsSettings fixed_step_physics(double dt) {
+  PhysicsSettings s;
+  s.particle_materials = {{"seed", 1250.0, 437e3, 100e3, 0.2}};
+  s.integrator.gravity = Vec3(0.0, 0.0, -9.81);
+  s.time_step.automatic = false;
+  s.time_step.fixed_dt = dt;
+  s.skin = 5e-4;
+  return s;
+}
+
+}  // namespace
+
+TEST(UnstableMotion, FirstNonFinitePositionIsFound) {
+  ParticleArrays p;
+  for (int i = 0; i < 100; ++i) p.add(Vec3(1e300 * (i % 2), 0.01 * i, 0.0), 3e-3, 1250.0);  // huge but finite
+  EXPECT_FALSE(first_non_finite_position(p).has_value());
+  p.position[37].y() = std::numeric_limits<double>::quiet_NaN();
+  p.position[64].z() = std::numeric_limits<double>::infinity();
+  ASSERT_TRUE(first_non_finite_position(p).has_value());
+  EXPECT_EQ(*first_non_finite_position(p), 37u);
+}
+
+TEST(UnstableMotion, ANaNPositionStopsTheRunWithinACheckIntervalNamingTheTimeStep) {
+  // A NaN never asks for a neighbour rebuild (every comparison with it is false), so the
+  // stepper checks the positions every kFiniteCheckInterval steps. (The spheres are apart,
+  // so the NaN stays in sphere 1 instead of reaching sphere 0 through a contact.)
+  World w;
+  w.particles.add(Vec3(0.0, 0.0, 0.0), 3e-3, 1250.0);
+  w.particles.add(Vec3(0.0, 0.0, 0.1), 3e-3, 1250.0);
+  Stepper stepper(fixed_step_physics(1e-6));
+  stepper.prepare(w);
+  stepper.run(w, 5);
+  w.particles.position[1].x() = std::numeric_limits<double>::quiet_NaN();
+  try {
+    stepper.run(w, Stepper::kFiniteCheckInterval);
+    ADD_FAILURE() << "a NaN position went unnoticed for " << Stepper::kFiniteCheckInterval << " steps";
+  } catch (const UnstableMotion& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("particle 1 has a non-finite position at step 100"), std::string::npos) << m;
+    EXPECT_NE(m.find("fixed by integration.time_step"), std::string::npos) << m;
+    EXPECT_NE(m.find("critical estimate of"), std::string::npos) << m;
+  }
+}
+
+TEST(UnstableMotion, AnInfinitePositionStopsTheRunBeforeTheNeighbourGridIndexesIt) {
+  World w;
+  w.particles.add(Vec3(0.0, 0.0, 0.0), 3e-3, 1250.0);
+  w.particles.add(Vec3(0.0, 0.0, 0.0059), 3e-3, 1250.0);
+  Stepper stepper(fixed_step_physics(1e-6));
+  stepper.prepare(w);
+  stepper.run(w, 3);
+  w.particles.position[0].z() = -std::numeric_limits<double>::infinity();  // asks for a rebuild at once
+  EXPECT_THROW(stepper.step(w), UnstableMotion);
+}
+
+TEST(NeighbourGrid, SpheresFarApartNeedNoHugeGrid) {
+  // Two touching spheres and two strays a kilometre away on two axes: with cells of one
+  // diameter plus skin the grid would have ~10^11 cells. The cell size grows instead; the
+  // list is the same (partners are sorted), here the one touching pair.
+  World w;
+  w.particles.add(Vec3(0.0, 0.0, 0.0), 3e-3, 1250.0);
+  w.particles.add(Vec3(0.0, 0.0, 0.0059), 3e-3, 1250.0);
+  w.particles.add(Vec3(1000.0, 0.0, 0.0), 3e-3, 1250.0);
+  w.particles.add(Vec3(0.0, 1000.0, 1000.0), 3e-3, 1250.0);
+  Stepper stepper(fixed_step_physics(1e-6));
+  stepper.prepare(w);
+  const auto& pairs = w.contacts.particle_pairs;
+  ASSERT_EQ(pairs.size(), 1u);
+  EXPECT_EQ(pairs.first[0], 0u);
+  EXPECT_EQ(pairs.second[0], 1u);
+}
