@@ -72,6 +72,12 @@ def read_shear_config(path):
             continue
         if k == "packing_file":
             b[k] = v
+        elif k == "edge_contacts":
+            # YADE's boxes touch a sphere each with its own edges, as colza's "per_wall";
+            # colza's "per_surface" (open edges at the seams and rim corners) has no YADE form.
+            if v != "per_wall":
+                raise cy.ConfigError(f'shear_box.edge_contacts = "{v}": YADE\'s boxes give one contact per '
+                                     'plate, which is "per_wall" only')
         elif k in b:
             b[k] = int(v) if k == "record_interval" else float(v)
         else:

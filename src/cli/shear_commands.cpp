@@ -46,6 +46,7 @@ std::string config_fingerprint(const RunConfig& c) {
 
 nlohmann::json load_summary(const RunConfig& c, const ShearSample& sample, const ShearLoadResult& r, int threads) {
   nlohmann::json s = common_summary(c, "shear", threads);
+  s["edge_contacts"] = to_string(c.shear_box.edge_contacts);
   s["config_fingerprint"] = config_fingerprint(c);
   s["particles"] = r.particles;
   s["particles_generated"] = sample.generated;
@@ -259,6 +260,7 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
 
   // --- Mohr-Coulomb line ----------------------------------------------------------
   nlohmann::json s = common_summary(c, "shear-series", opt.threads);
+  s["edge_contacts"] = to_string(c.shear_box.edge_contacts);
   s["config_fingerprint"] = fingerprint;
   s["particles"] = sample.particles.size();
   s["particles_generated"] = sample.generated;

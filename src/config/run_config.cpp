@@ -22,6 +22,10 @@ const char* to_string(Scenario s) {
   return "?";
 }
 
+const char* to_string(BoxEdgeContacts e) {
+  return e == BoxEdgeContacts::kPerWall ? "per_wall" : "per_surface";
+}
+
 namespace {
 
 ParticleSpec read_particle(const ConfigNode& t) {
@@ -122,6 +126,9 @@ ShearBoxSpec read_shear_box(const ConfigNode& t, const ParticleSpec& particle) {
   b.consolidation_max_time = t.positive("consolidation_max_time", b.consolidation_max_time);
   b.record_interval = t.integer("record_interval", b.record_interval, 1);
   b.packing_file = t.string("packing_file", "");
+  b.edge_contacts = t.choice("edge_contacts", "per_wall", {"per_wall", "per_surface"}) == "per_wall"
+                        ? BoxEdgeContacts::kPerWall
+                        : BoxEdgeContacts::kPerSurface;
   if (b.shear_plane >= b.height) t.fail("shear_plane", "must lie below shear_box.height");
   if (b.generation_height < b.height) t.fail("generation_height", "must be at least shear_box.height");
   if (b.strength_window_start >= b.strength_window_end)

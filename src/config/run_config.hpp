@@ -60,6 +60,14 @@ struct OedometerSpec {                // [oedometer]
   std::string packing_file;
 };
 
+// How the shear box's plates touch a sphere where two of them meet (walls/wall.hpp, OpenEdges).
+// kPerWall: every plate is a wall of its own, edges included, so a sphere at the seam of an
+// upper and a lower side wall, or at the corner of a rim and its side wall, can get a
+// contact from each (PFC3D 4's walls and YADE's boxes do the same: the paper's model and the
+// cross-check's). kPerSurface: one contact per surface there (the plates' shared edges open).
+enum class BoxEdgeContacts { kPerWall, kPerSurface };
+const char* to_string(BoxEdgeContacts e);
+
 struct ShearBoxSpec {                // [shear_box], physics.md section 4
   double length = 0.200;              // m, inner size along x (shear direction)
   double width = 0.200;               // m, inner size along y
@@ -80,6 +88,7 @@ struct ShearBoxSpec {                // [shear_box], physics.md section 4
   double consolidation_max_time = 2.0;      // s
   std::int64_t record_interval = 100;       // steps between curve samples
   std::string packing_file;           // optional settled packing (skips generation and settling)
+  BoxEdgeContacts edge_contacts = BoxEdgeContacts::kPerWall;  // shear_box.edge_contacts
 };
 
 struct SceneParticle {

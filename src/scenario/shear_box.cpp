@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 
 #include "analysis/shear_strength.hpp"
 #include "io/packing_file.hpp"
@@ -15,6 +17,16 @@ double PlateServo::advance_speed(double force, double contact_stiffness, double 
   const double v = relaxation * (target_force - force) / (contact_stiffness * dt);
   return std::clamp(v, -max_speed, max_speed);
 }
+
+namespace {
+
+Wall& wall_named(World& world, const std::string& name) {
+  for (Wall& w : world.walls)
+    if (w.name == name) return w;
+  throw std::logic_error("shear box: no wall named " + name);
+}
+
+}  // namespace
 
 ShearBoxWalls build_shear_box(World& world, const ShearBoxSpec& b, double wall_top) {
   ShearBoxWalls ids;
@@ -42,7 +54,28 @@ ShearBoxWalls build_shear_box(World& world, const ShearBoxSpec& b, double wall_t
   // Rim: extends forwards from the upper half's leading side, facing down; it keeps the
   // lower half's particles that pass under it from escaping upward.
   add(Wall::rectangle("upper_rim", Vec3(L + b.rim_length / 2, W / 2, sp), -ez, ex, b.rim_length / 2, W / 2), ids.upper);
+  if (b.edge_contacts == BoxEdgeContacts::kPerSurface) {
+    // The front and back seams stay coplanar as the lower half slides along them.
+    for (const char* name : {"lower_front", "lower_back", "upper_front", "upper_back"}) {
+      Wall& w = wall_named(world, name);
+      set_edge_open(w, Vec3(w.origin.x(), w.origin.y(), sp), true);
+    }
+    // Each rim hands its edge at the side wall to that wall, which keeps the convex corner.
+    Wall& lower_rim = wall_named(world, "lower_rim");
+    set_edge_open(lower_rim, Vec3(lower_rim.origin.x() + b.rim_length / 2, W / 2, sp), true);
+    Wall& upper_rim = wall_named(world, "upper_rim");
+    set_edge_open(upper_rim, Vec3(upper_rim.origin.x() - b.rim_length / 2, W / 2, sp), true);
+    set_aligned_seams_open(world, b, true);
+  }
   return ids;
+}
+
+void set_aligned_seams_open(World& world, const ShearBoxSpec& b, bool open) {
+  if (b.edge_contacts != BoxEdgeContacts::kPerSurface) return;
+  for (const char* name : {"lower_trailing", "lower_leading", "upper_trailing", "upper_leading"}) {
+    Wall& w = wall_named(world, name);
+    set_edge_open(w, Vec3(w.origin.x(), w.origin.y(), b.shear_plane), open);
+  }
 }
 
 ShearSample prepare_shear_sample(const RunConfig& c, Progress& progress) {
@@ -178,6 +211,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
   // --- shearing ---------------------------------------------------------------------
   StageClock shear_clock("shearing");
   progress.start_stage("shearing");
+  set_aligned_seams_open(world, b, false);  // the trailing and leading seams become steps
   for (std::size_t k : ids.lower) world.walls[k].velocity = Vec3(b.shear_speed, 0.0, 0.0);
   const double x0 = world.walls[ids.lower[0]].origin.x();
   const double z0 = world.walls[ids.plate].origin.z();

@@ -20,8 +20,19 @@ struct ShearBoxWalls {
   std::size_t plate = 0;           // added once the sample is prepared
 };
 
-// Adds the eleven box walls (the upper sides reach up to `wall_top`).
+// Adds the eleven box walls (the upper sides reach up to `wall_top`). With
+// box.edge_contacts = kPerSurface, the plates' shared edges are open (walls/wall.hpp): the
+// front and back side walls' seam at the shear plane (both plates' edges: the one whose face
+// the sphere's projection falls on takes it), each rim's edge at its side wall (the side
+// wall keeps that convex edge), and, while the halves are aligned, the trailing and leading
+// side walls' seams (set_aligned_seams_open).
 ShearBoxWalls build_shear_box(World& world, const ShearBoxSpec& box, double wall_top);
+
+// Opens (true) or closes (false) the seams of the trailing and leading side walls, for
+// kPerSurface: open while the halves are aligned (coplanar plates), closed once the lower
+// half moves, when the lower trailing wall's top edge and the upper leading wall's bottom
+// edge become the convex corners with the rims. A no-op for kPerWall.
+void set_aligned_seams_open(World& world, const ShearBoxSpec& box, bool open);
 
 struct ShearSample {
   ParticleArrays particles;      // settled and cut at the box height, at rest

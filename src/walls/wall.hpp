@@ -3,7 +3,8 @@
 //   plane     - infinite, one-sided: `normal` points into the particle side;
 //   cylinder  - inner surface of a circular cylinder (oedometer envelope), finite along its axis;
 //   rectangle - finite, two-sided plate (shear-box faces, rims, plates); its edges and
-//               corners are part of the surface, so spheres can touch them.
+//               corners are part of the surface, so spheres can touch them, except an
+//               edge marked open (below).
 #pragma once
 #include <string>
 #include <vector>
@@ -14,6 +15,18 @@ namespace colza {
 enum class WallShape { kPlane, kCylinder, kRectangle };
 const char* to_string(WallShape shape);
 
+// A rectangle's edges that are open: where the sphere's projection on the plate's plane lies
+// beyond such an edge, the plate gives no contact (neither edge nor corner). For an edge the
+// plate shares with another surface that takes the contact there: a coplanar neighbour (the
+// seam between a shear box's upper and lower side walls) or a wall meeting it at a convex
+// corner that keeps the edge (a rim and its side wall). Without it a sphere touching the seam
+// or corner gets one contact from each plate, up to twice the force of one surface.
+struct OpenEdges {
+  bool u_min = false, u_max = false;  // the edges at s_u = -half_u and +half_u
+  bool v_min = false, v_max = false;  // the edges at s_v = -half_v and +half_v
+  bool any() const { return u_min || u_max || v_min || v_max; }
+};
+
 struct Wall {
   std::string name;
   WallShape shape = WallShape::kPlane;
@@ -22,6 +35,7 @@ struct Wall {
   Vec3 axis_u = Vec3::UnitX();  // rectangle: unit in-plane axes (orthogonal to normal)
   Vec3 axis_v = Vec3::UnitY();
   double half_u = 0.0, half_v = 0.0;          // rectangle half extents (m)
+  OpenEdges open_edges;                        // rectangle: none by default
   double radius = 0.0;                         // cylinder inner radius (m)
   double axial_min = 0.0, axial_max = 0.0;     // cylinder extent along its axis from origin (m)
   Vec3 velocity = Vec3::Zero();                // m/s
@@ -51,5 +65,10 @@ struct WallContactGeometry {
 };
 
 WallContactGeometry wall_sphere_geometry(const Wall& wall, const Vec3& centre, double radius);
+
+// Opens (or closes) the edge of rectangle `wall` that passes through `point_on_edge` (a point
+// of the edge's line, e.g. its middle; within 1e-9 m). Throws std::invalid_argument when no
+// edge passes there or the wall is not a rectangle.
+void set_edge_open(Wall& wall, const Vec3& point_on_edge, bool open);
 
 }  // namespace colza

@@ -122,3 +122,22 @@ TEST(WallGeometry, RotatedRectangle) {
   EXPECT_NEAR(g.overlap, 0.0, kTol);
   expect_vec(g.normal, Vec3(0, -0.8, -0.6), "edge normal");
 }
+
+TEST(WallGeometry, RectangleOpenEdgeGivesNoContactBeyondIt) {
+  Wall w = Wall::rectangle("r", Vec3::Zero(), Vec3::UnitZ(), Vec3::UnitX(), 1.0, 0.5);
+  set_edge_open(w, Vec3(1.0, 0.0, 0.0), true);  // the edge x = +1 (u_max)
+  EXPECT_TRUE(w.open_edges.u_max);
+  EXPECT_FALSE(w.open_edges.u_min || w.open_edges.v_min || w.open_edges.v_max);
+  // Beyond it: no contact (RectangleEdge's sphere a), nor at the corner beyond it.
+  EXPECT_FALSE(wall_sphere_geometry(w, Vec3(1.3, 0.2, 0.0), 0.5).in_range);
+  EXPECT_FALSE(wall_sphere_geometry(w, Vec3(1.2, 0.7, 0.1), 0.5).in_range);
+  // On the face up to the edge, and beyond the closed edges, as before.
+  const Vec3 on_face(0.99, 0.2, 0.3);
+  expect_geometry(wall_sphere_geometry(w, on_face, 0.5), on_face, 0.5, 0.2, Vec3::UnitZ(), Vec3(0.99, 0.2, -0.1));
+  const Vec3 beyond_closed(-1.3, 0.2, 0.0);
+  expect_geometry(wall_sphere_geometry(w, beyond_closed, 0.5), beyond_closed, 0.5, 0.2, -Vec3::UnitX(),
+                  Vec3(-0.9, 0.2, 0.0));
+  set_edge_open(w, Vec3(1.0, -0.3, 0.0), false);  // any point of the edge's line names it
+  EXPECT_TRUE(wall_sphere_geometry(w, Vec3(1.3, 0.2, 0.0), 0.5).in_range);
+  EXPECT_THROW(set_edge_open(w, Vec3(0.5, 0.0, 0.0), true), std::invalid_argument);  // no edge there
+}
