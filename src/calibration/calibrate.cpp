@@ -231,13 +231,20 @@ Eigen::VectorXd record_scatter(const LoopOptions& opt, const Eigen::VectorXd& x,
   return mean / static_cast<double>(all.size());
 }
 
-void surface_warnings(const Problem& p, const std::vector<ResponseSurface>& s, std::vector<std::string>& w) {
+// Warnings on the surfaces the uncertainty comes from. Paper mode: the design's surfaces,
+// judged by their residual and their R^2. Sequential mode: planes local to the solution,
+// fitted to runs a fraction of the range apart, whose R^2 measures the realisation scatter
+// against that small span rather than the fit, so only the missing residual is named.
+void surface_warnings(const Problem& p, const std::vector<ResponseSurface>& s, bool sequential,
+                      std::vector<std::string>& w) {
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (s[i].degrees_of_freedom() == 0)
       w.push_back("the surface for " + p.targets[i].name + " passes exactly through its " +
                   std::to_string(s[i].points()) + " points (no residual degree of freedom): its error is unknown and "
-                  "not included in the parameter uncertainty; add design points");
-    else if (s[i].r2() < 0.9)
+                  "not included in the parameter uncertainty; " +
+                  (sequential ? "the search stopped on its start design: give more start points (sequential.start)"
+                              : "add design points"));
+    else if (!sequential && s[i].r2() < 0.9)
       w.push_back("the " + std::string(to_string(s[i].kind())) + " for " + p.targets[i].name + " fits poorly (R^2 = " +
                   fmt(s[i].r2()) + "): narrow the design range around the expected solution, or use --mode sequential");
   }
@@ -525,7 +532,7 @@ CalibrationResult calibrate_paper(const Problem& p, const ForwardModel& model, c
   }
   r.surfaces = fit_surfaces(p, r.runs, idx, p.surface);
   r.surface_points = idx;
-  surface_warnings(p, r.surfaces, r.warnings);
+  surface_warnings(p, r.surfaces, false, r.warnings);
   r.solution = round_point(solve_on_surfaces(r.surfaces, p, p.lower(), p.upper(), p.design, true));
   // The validation run, and with replicates its other realisations (all in one batch).
   const BatchWithReplicates v = evaluate_with_replicates(p, model, opt, {r.solution}, r.solution);
@@ -660,7 +667,7 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
   // included (the loop's planes were fitted before it): with n + 2 runs or more they have a
   // residual degree of freedom, so their error enters the uncertainty.
   r.surfaces = local_planes(p, r.runs, pool, best, sc, r.surface_points);
-  surface_warnings(p, r.surfaces, r.warnings);
+  surface_warnings(p, r.surfaces, true, r.warnings);
   r.runs[best].role = r.runs[best].role == "design" ? "design+validation" : "validation";
   propagate_uncertainty(p, r.surfaces, r);
   determination_warnings(p, r);

@@ -13,6 +13,7 @@
 #include "calibration/measured_shear_curve.hpp"
 #include "config/config_error.hpp"
 #include "core/concurrent.hpp"
+#include "core/unstable_motion.hpp"
 #include "core/version.hpp"
 #include "io/fingerprint.hpp"
 #include "io/output_dir.hpp"
@@ -328,11 +329,23 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
       if (spec_.shared_packing) s["packing_file"] = c.oedometer.packing_file;
       return s;
     };
+    // A run that blows up says which point of the calibration it was.
+    auto with_point = [&](const UnstableMotion& e) {
+      std::string point;
+      for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j)
+        point += (j ? ", " : "") + spec_.problem.parameters[j].name + " = " + num17(x[j]);
+      return UnstableMotion("run " + fp + " (" + point + (replicate ? ", replicate " + std::to_string(replicate) : "") +
+                            "): " + e.what());
+    };
     if (spec_.stage == Stage::kShear) {
       // Each load's whole curve is kept (load-<sigma>Pa.csv), so that other strength
       // definitions can be read from the runs later.
       std::vector<Table> curves;
-      outputs = run_shear_outputs(c, wall, curves);
+      try {
+        outputs = run_shear_outputs(c, wall, curves);
+      } catch (const UnstableMotion& e) {
+        throw with_point(e);
+      }
       OutputStaging out(dir, true);
       for (std::size_t k = 0; k < curves.size(); ++k)
         write_csv(out.path(shear_curve_file_name(spec_.loads[k])), curves[k]);
@@ -341,7 +354,11 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
     } else {
       // The curve is written into the staging folder's final place after the summary check.
       const ScratchFolder tmp(runs_ / process_unique(".tmp-" + fp));
-      outputs = run_oedometer_outputs(c, tmp.path, wall);
+      try {
+        outputs = run_oedometer_outputs(c, tmp.path, wall);
+      } catch (const UnstableMotion& e) {
+        throw with_point(e);
+      }
       OutputStaging out(dir, true);
       fs::rename(tmp.path / "curve.csv", out.path("curve.csv"));
       write_json(out.path("summary.json"), summary_of());

@@ -19,6 +19,7 @@
 #include "io/format_number.hpp"
 #include "io/output_dir.hpp"
 #include "io/summary.hpp"
+#include "io/output_error.hpp"
 
 namespace colza {
 
@@ -217,7 +218,7 @@ int calibrate_command(const CalibrateOptions& opt) {
     std::ofstream md(staging.path("report.md"));
     md << calibration_report(spec.problem, result, ctx);
     md.close();  // a full disk shows at the flush: a cut report is never committed
-    if (!md) throw std::runtime_error("cannot write " + staging.path("report.md"));
+    if (!md) throw_cannot_write(staging.path("report.md"));
   }
   staging.commit();
 

@@ -17,7 +17,7 @@
 #include "core/interrupt.hpp"
 #include "core/unstable_motion.hpp"
 #include "core/version.hpp"
-#include "io/hdf5_writer.hpp"
+#include "io/output_error.hpp"
 
 namespace {
 
@@ -161,7 +161,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "colza: error: %s; the unfinished outputs were removed, earlier results are untouched\n",
                  e.what());
     return 1;
-  } catch (const colza::Hdf5WriteError& e) {  // a full disk, say: not colza's fault
+  } catch (const colza::OutputWriteError& e) {  // a full disk, say (HDF5's too): not colza's fault
     std::fprintf(stderr, "colza: error: %s; the unfinished outputs were removed, earlier results are untouched\n",
                  e.what());
     return 1;

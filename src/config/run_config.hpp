@@ -60,11 +60,11 @@ struct OedometerSpec {                // [oedometer]
   std::string packing_file;
 };
 
-// How the shear box's plates touch a sphere where two of them meet (walls/wall.hpp, OpenEdges).
+// How the shear box's plates touch a sphere where two of them meet (walls/wall.hpp, RectangleEdges).
 // kPerWall: every plate is a wall of its own, edges included, so a sphere at the seam of an
 // upper and a lower side wall, or at the corner of a rim and its side wall, can get a
 // contact from each (PFC3D 4's walls and YADE's boxes do the same: the paper's model and the
-// cross-check's). kPerSurface: one contact per surface there (the plates' shared edges open).
+// cross-check's). kPerSurface: one contact per surface there (the plates' shared edges restricted).
 enum class BoxEdgeContacts { kPerWall, kPerSurface };
 const char* to_string(BoxEdgeContacts e);
 

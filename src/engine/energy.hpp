@@ -9,7 +9,8 @@ namespace colza {
 struct EnergyLedger {
   double slip_dissipated = 0.0;     // Coulomb sliding (J), cumulative
   double damping_dissipated = 0.0;  // local damping (J), cumulative
-  double bond_break_lost = 0.0;     // stored energy of contacts that vanished (tension break, separation) (J)
+  double bond_break_lost = 0.0;     // stored energy of contacts that vanished (J): tension break, separation
+                                    // of a particle pair, a wall contact leaving its wall's range (wall_pair_force.hpp)
   double shear_break_released = 0.0;  // shear-spring energy released when bonds break in shear (J)
   double wall_work = 0.0;           // work done by moving walls on the particles (J), cumulative
 };

@@ -91,9 +91,14 @@ template <WallShape kShape>
     const double vx = wall.axis_v[0], vy = wall.axis_v[1], vz = wall.axis_v[2];
     const double su = (rx * ux + ry * uy) + rz * uz, sv = (rx * vx + ry * vy) + rz * vz;
     const double lo_u = -wall.half_u, lo_v = -wall.half_v;
-    const OpenEdges& open = wall.open_edges;  // beyond an open edge: no contact (walls/wall.hpp)
-    const bool beyond_open = (open.u_min & (su < lo_u)) | (open.u_max & (su > wall.half_u)) |
-                             (open.v_min & (sv < lo_v)) | (open.v_max & (sv > wall.half_v));
+    // Beyond a restricted edge: no contact (kNone), or none behind the plate (kFrontOnly).
+    const RectangleEdges& e = wall.edges;
+    const bool behind = !(along_normal > 0.0);
+    const auto refuses = [behind](EdgeContact c) {
+      return (c == EdgeContact::kNone) | ((c == EdgeContact::kFrontOnly) & behind);
+    };
+    const bool refused = ((su < lo_u) & refuses(e.u_min)) | ((su > wall.half_u) & refuses(e.u_max)) |
+                         ((sv < lo_v) & refuses(e.v_min)) | ((sv > wall.half_v) & refuses(e.v_max));
     // std::clamp(s, lo, hi) = s < lo ? lo : (hi < s ? hi : s)
     const double cu = su < lo_u ? lo_u : (wall.half_u < su ? wall.half_u : su);
     const double cv = sv < lo_v ? lo_v : (wall.half_v < sv ? wall.half_v : sv);
@@ -108,7 +113,7 @@ template <WallShape kShape>
     g.nx = on_face ? (front ? ax : -ax) : dx / dist;
     g.ny = on_face ? (front ? ay : -ay) : dy / dist;
     g.nz = on_face ? (front ? az : -az) : dz / dist;
-    g.in_range = (!beyond_open) & (on_face | (dist != 0.0));
+    g.in_range = (!refused) & (on_face | (dist != 0.0));
   }
   return g;
 }

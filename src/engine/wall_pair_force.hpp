@@ -15,21 +15,25 @@ namespace colza::detail {
 // Evaluates wall pair (wall, particle i, history h). Returns true when the pair carries a
 // force this step; then `force` is the force on the particle (N) and `torque` its moment
 // about the particle's centre (N m). Slip dissipation (J) goes to sink.slip. A pair that
-// left the wall's range, or separated, resets its history. Leaving the range (beyond a
-// cylinder's end or a rectangle's open edge) while touching, the contact vanishes with its
-// springs still loaded: that energy goes to sink.broken (the ledger's bond_break_lost). A
-// separation does not book it: the overlap closes within a step, and its spring's last
-// O((omega dt)^2) energy went into the motion (the energy tests' tolerance).
+// left the wall's range, or separated, resets its history. A contact that leaves the range
+// while touching vanishes with its springs loaded, and sink.broken (the ledger's
+// bond_break_lost) gets what is lost: beyond a cylinder's end both springs' energy; beyond a
+// rectangle's restricted edge only the shear spring's, since there another surface takes
+// the sphere at the same overlap (a coplanar neighbour's face, the edge of a convex corner:
+// walls/wall.hpp) and its normal spring carries that energy on. A separation books nothing:
+// the overlap closes within a step, and its spring's last O((omega dt)^2) energy went into
+// the motion (the energy tests' tolerance).
 template <class Normal, class Tangential, class Sink>
 [[gnu::always_inline]] inline bool wall_pair_force(const Normal& normal_law, const Tangential& tangential_law,
                                                    const ParticleArrays& p, const Wall& wall, const PairTable& pairs,
                                                    double dt, double half_dt, Index i, ContactHistory& h,
                                                    Vec3& force, Vec3& torque, Sink& sink) {
   const WallContactGeometry g = wall_sphere_geometry(wall, p.position[i], p.radius[i]);
-  const PairParameters& q = pairs.particle_wall(p.material[i], wall.material);
   if (!g.in_range || (!h.touching && g.overlap < 0.0)) {
-    if (h.touching) {  // out of the wall's range: the contact vanishes with its springs' energy
-      sink.broken(normal_law.energy(q, h.normal_force) + tangential_law.energy(q, h.shear_force));
+    if (h.touching) {
+      const PairParameters& q = pairs.particle_wall(p.material[i], wall.material);
+      const bool handed_on = wall.shape == WallShape::kRectangle;
+      sink.broken((handed_on ? 0.0 : normal_law.energy(q, h.normal_force)) + tangential_law.energy(q, h.shear_force));
       h.reset();
     }
     return false;
@@ -41,6 +45,7 @@ template <class Normal, class Tangential, class Sink>
   const Vec3 rel_vel = (p.velocity[i] + p.angular_velocity[i].cross(arm)) - wall.velocity;
   k.shear_increment = (rel_vel - rel_vel.dot(k.normal) * k.normal) * dt;
   k.twist_angle = half_dt * p.angular_velocity[i].dot(h.normal);  // previous normal
+  const PairParameters& q = pairs.particle_wall(p.material[i], wall.material);
   const ContactOutcome out = evaluate_contact(normal_law, tangential_law, NoBond{}, q, k, h, false);
   if (!out.carries_force) return false;  // separated: its springs' last energy went into the motion
   sink.slip(out.slip_dissipation);

@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 #include "core/particles.hpp"
+#include "io/output_error.hpp"
 #include "io/table.hpp"
 
 namespace H5 { class H5File; }
@@ -23,9 +24,9 @@ inline constexpr int kResultSchemaVersion = 1;
 
 // Any failure of the HDF5 library while writing (a full disk, say), with the file and the
 // failing call: HDF5's own exceptions do not derive from std::exception.
-class Hdf5WriteError : public std::runtime_error {
+class Hdf5WriteError : public OutputWriteError {
  public:
-  using std::runtime_error::runtime_error;
+  using OutputWriteError::OutputWriteError;
 };
 
 class Hdf5Writer {

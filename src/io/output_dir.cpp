@@ -12,6 +12,7 @@
 
 #include "config/config_error.hpp"
 #include "io/load_label.hpp"
+#include "io/output_error.hpp"
 
 namespace colza {
 
@@ -105,7 +106,7 @@ void write_text_atomically(const fs::path& file, const std::string& text) {
     std::ofstream o(tmp);
     o << text;
     o.close();  // the last buffer is written here: check after it
-    if (!o) throw std::runtime_error("cannot write " + tmp);
+    if (!o) throw_cannot_write(tmp);
   });
 }
 

@@ -8,6 +8,7 @@
 #include "config/config_error.hpp"
 #include "io/input_file.hpp"
 #include "io/output_dir.hpp"
+#include "io/output_error.hpp"
 
 namespace colza {
 
@@ -39,13 +40,13 @@ std::vector<PackedSphere> read_packing(const std::string& file, const std::strin
 
 void write_packing(const std::string& file, const ParticleArrays& particles) {
   std::FILE* f = std::fopen(file.c_str(), "w");
-  if (!f) throw std::runtime_error("cannot write " + file);
+  if (!f) throw_cannot_write(file);
   std::fprintf(f, "# colza packing: x y z r (m), %zu spheres\n", particles.size());
   for (std::size_t i = 0; i < particles.size(); ++i) {
     const Vec3& x = particles.position[i];
     std::fprintf(f, "%.17g %.17g %.17g %.17g\n", x[0], x[1], x[2], particles.radius[i]);
   }
-  if (std::fclose(f) != 0) throw std::runtime_error("cannot write " + file);
+  if (std::fclose(f) != 0) throw_cannot_write(file);
 }
 
 void write_packing_atomically(const std::string& file, const ParticleArrays& particles) {

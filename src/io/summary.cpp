@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "config/config_error.hpp"
+#include "io/output_error.hpp"
 
 namespace colza {
 
@@ -20,10 +21,10 @@ nlohmann::json stages_json(const std::vector<StageTiming>& stages) {
 
 void write_json(const std::string& file, const nlohmann::json& value) {
   std::ofstream out(file);
-  if (!out) throw std::runtime_error("cannot write " + file);
+  if (!out) throw_cannot_write(file);
   out << value.dump(2) << '\n';
   out.close();  // the last buffer is written here: check after it
-  if (!out) throw std::runtime_error("cannot write " + file);
+  if (!out) throw_cannot_write(file);
 }
 
 nlohmann::json read_json_file(const std::string& file, const std::string& what_to_do) {

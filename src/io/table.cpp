@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "io/output_error.hpp"
+
 namespace colza {
 
 const std::vector<double>& Table::column(const std::string& name) const {
@@ -13,7 +15,7 @@ const std::vector<double>& Table::column(const std::string& name) const {
 
 void write_csv(const std::string& file, const Table& table) {
   std::FILE* f = std::fopen(file.c_str(), "w");
-  if (!f) throw std::runtime_error("cannot write " + file);
+  if (!f) throw_cannot_write(file);
   for (std::size_t k = 0; k < table.names.size(); ++k)
     std::fprintf(f, "%s%s", k ? "," : "", table.names[k].c_str());
   std::fputc('\n', f);
@@ -22,7 +24,7 @@ void write_csv(const std::string& file, const Table& table) {
       std::fprintf(f, "%s%.17g", k ? "," : "", table.columns[k][r]);
     std::fputc('\n', f);
   }
-  if (std::fclose(f) != 0) throw std::runtime_error("cannot write " + file);
+  if (std::fclose(f) != 0) throw_cannot_write(file);
 }
 
 }  // namespace colza

@@ -15,11 +15,11 @@ namespace {
 // and a sphere just beyond an end at the build may be within the range, and touching,
 // before the next build. Planes and rectangles need no widening: their gap is a distance to
 // the whole surface, edges and corners included, so it closes by at most a skin. A
-// rectangle's open edges are closed for the test: a sphere beyond one at the build may
-// move back over the plate before the next.
+// rectangle's restricted edges count in full for the test: a sphere beyond one at the
+// build may move back over the plate, or in front of it, before the next.
 Wall candidate_reach(const Wall& wall, double skin) {
   Wall reach = wall;
-  reach.open_edges = OpenEdges{};
+  reach.edges = RectangleEdges{};
   if (reach.shape == WallShape::kCylinder) {
     reach.axial_min -= skin;
     reach.axial_max += skin;

@@ -55,27 +55,40 @@ ShearBoxWalls build_shear_box(World& world, const ShearBoxSpec& b, double wall_t
   // lower half's particles that pass under it from escaping upward.
   add(Wall::rectangle("upper_rim", Vec3(L + b.rim_length / 2, W / 2, sp), -ez, ex, b.rim_length / 2, W / 2), ids.upper);
   if (b.edge_contacts == BoxEdgeContacts::kPerSurface) {
-    // The front and back seams stay coplanar as the lower half slides along them.
+    // The front and back seams stay coplanar as the lower half slides along them: the plate
+    // whose face the sphere's projection falls on takes the contact.
     for (const char* name : {"lower_front", "lower_back", "upper_front", "upper_back"}) {
       Wall& w = wall_named(world, name);
-      set_edge_open(w, Vec3(w.origin.x(), w.origin.y(), sp), true);
+      set_edge_contact(w, Vec3(w.origin.x(), w.origin.y(), sp), EdgeContact::kNone);
     }
-    // Each rim hands its edge at the side wall to that wall, which keeps the convex corner.
+    // Each rim hands its end at the side wall to that wall's edge, the convex corner.
     Wall& lower_rim = wall_named(world, "lower_rim");
-    set_edge_open(lower_rim, Vec3(lower_rim.origin.x() + b.rim_length / 2, W / 2, sp), true);
+    set_edge_contact(lower_rim, Vec3(lower_rim.origin.x() + b.rim_length / 2, W / 2, sp), EdgeContact::kNone);
     Wall& upper_rim = wall_named(world, "upper_rim");
-    set_edge_open(upper_rim, Vec3(upper_rim.origin.x() - b.rim_length / 2, W / 2, sp), true);
-    set_aligned_seams_open(world, b, true);
+    set_edge_contact(upper_rim, Vec3(upper_rim.origin.x() - b.rim_length / 2, W / 2, sp), EdgeContact::kNone);
+    set_trailing_and_leading_seams(world, b, true);
   }
   return ids;
 }
 
-void set_aligned_seams_open(World& world, const ShearBoxSpec& b, bool open) {
+void set_trailing_and_leading_seams(World& world, const ShearBoxSpec& b, bool halves_aligned) {
   if (b.edge_contacts != BoxEdgeContacts::kPerSurface) return;
-  for (const char* name : {"lower_trailing", "lower_leading", "upper_trailing", "upper_leading"}) {
+  auto set = [&](const char* name, EdgeContact contact) {
     Wall& w = wall_named(world, name);
-    set_edge_open(w, Vec3(w.origin.x(), w.origin.y(), b.shear_plane), open);
+    set_edge_contact(w, Vec3(w.origin.x(), w.origin.y(), b.shear_plane), contact);
+  };
+  if (halves_aligned) {  // coplanar plates: the one whose face the projection falls on
+    for (const char* name : {"lower_trailing", "lower_leading", "upper_trailing", "upper_leading"})
+      set(name, EdgeContact::kNone);
+    return;
   }
+  // Offset halves. The lower trailing wall's top edge and the upper leading wall's bottom
+  // edge are convex corners with the rims; behind them lies the rim's face, which takes
+  // the spheres there. The other two edges lie on a rim's face, out of the spheres' reach.
+  set("lower_trailing", EdgeContact::kFrontOnly);
+  set("upper_leading", EdgeContact::kFrontOnly);
+  set("lower_leading", EdgeContact::kBothSides);
+  set("upper_trailing", EdgeContact::kBothSides);
 }
 
 ShearSample prepare_shear_sample(const RunConfig& c, Progress& progress) {
@@ -211,7 +224,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
   // --- shearing ---------------------------------------------------------------------
   StageClock shear_clock("shearing");
   progress.start_stage("shearing");
-  set_aligned_seams_open(world, b, false);  // the trailing and leading seams become steps
+  set_trailing_and_leading_seams(world, b, false);  // the halves part: those seams become steps
   for (std::size_t k : ids.lower) world.walls[k].velocity = Vec3(b.shear_speed, 0.0, 0.0);
   const double x0 = world.walls[ids.lower[0]].origin.x();
   const double z0 = world.walls[ids.plate].origin.z();

@@ -21,18 +21,19 @@ struct ShearBoxWalls {
 };
 
 // Adds the eleven box walls (the upper sides reach up to `wall_top`). With
-// box.edge_contacts = kPerSurface, the plates' shared edges are open (walls/wall.hpp): the
-// front and back side walls' seam at the shear plane (both plates' edges: the one whose face
-// the sphere's projection falls on takes it), each rim's edge at its side wall (the side
-// wall keeps that convex edge), and, while the halves are aligned, the trailing and leading
-// side walls' seams (set_aligned_seams_open).
+// box.edge_contacts = kPerSurface, the plates' shared edges are restricted (walls/wall.hpp,
+// RectangleEdges) so that one surface gives one contact: the front and back side walls'
+// seams at the shear plane give none beyond them (the plate whose face the sphere's
+// projection falls on takes it), each rim's end at its side wall gives none (the side
+// wall's edge is the convex corner), and the trailing and leading seams as set by
+// set_trailing_and_leading_seams for aligned halves.
 ShearBoxWalls build_shear_box(World& world, const ShearBoxSpec& box, double wall_top);
 
-// Opens (true) or closes (false) the seams of the trailing and leading side walls, for
-// kPerSurface: open while the halves are aligned (coplanar plates), closed once the lower
-// half moves, when the lower trailing wall's top edge and the upper leading wall's bottom
-// edge become the convex corners with the rims. A no-op for kPerWall.
-void set_aligned_seams_open(World& world, const ShearBoxSpec& box, bool open);
+// For kPerSurface (a no-op for kPerWall): with the halves aligned the trailing and leading
+// side walls' seams are coplanar and give none beyond them; once the lower half moves, the
+// lower trailing wall's top edge and the upper leading wall's bottom edge become the convex
+// corners with the rims and touch only spheres in front of them (behind lies the rim's face).
+void set_trailing_and_leading_seams(World& world, const ShearBoxSpec& box, bool halves_aligned);
 
 struct ShearSample {
   ParticleArrays particles;      // settled and cut at the box height, at rest

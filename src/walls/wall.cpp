@@ -82,12 +82,16 @@ WallContactGeometry cylinder_geometry(const Wall& w, const Vec3& x, double r) {
 WallContactGeometry rectangle_geometry(const Wall& w, const Vec3& x, double r) {
   const Vec3 rel = x - w.origin;
   const double su = rel.dot(w.axis_u), sv = rel.dot(w.axis_v);
-  const OpenEdges& open = w.open_edges;
-  if ((open.u_min && su < -w.half_u) || (open.u_max && su > w.half_u) || (open.v_min && sv < -w.half_v) ||
-      (open.v_max && sv > w.half_v))
-    return {};  // beyond an open edge: the surface that continues there takes the contact
-  const double cu = std::clamp(su, -w.half_u, w.half_u), cv = std::clamp(sv, -w.half_v, w.half_v);
   const double h = rel.dot(w.normal);
+  // Beyond a restricted edge: no contact there (kNone), or none behind the plate (kFrontOnly).
+  const auto refuses = [&](EdgeContact e) {
+    return e == EdgeContact::kNone || (e == EdgeContact::kFrontOnly && !(h > 0.0));
+  };
+  const RectangleEdges& edges = w.edges;
+  if ((su < -w.half_u && refuses(edges.u_min)) || (su > w.half_u && refuses(edges.u_max)) ||
+      (sv < -w.half_v && refuses(edges.v_min)) || (sv > w.half_v && refuses(edges.v_max)))
+    return {};
+  const double cu = std::clamp(su, -w.half_u, w.half_u), cv = std::clamp(sv, -w.half_v, w.half_v);
   if (cu == su && cv == sv) {  // projection on the face: plate seen from whichever side the sphere is
     const Vec3 n = (h >= 0.0) ? w.normal : Vec3(-w.normal);
     return from_distance(x, r, std::abs(h), n);
@@ -101,16 +105,17 @@ WallContactGeometry rectangle_geometry(const Wall& w, const Vec3& x, double r) {
 
 }  // namespace
 
-void set_edge_open(Wall& wall, const Vec3& point_on_edge, bool open) {
-  if (wall.shape != WallShape::kRectangle) throw std::invalid_argument("set_edge_open: " + wall.name + " is not a rectangle");
+void set_edge_contact(Wall& wall, const Vec3& point_on_edge, EdgeContact contact) {
+  if (wall.shape != WallShape::kRectangle)
+    throw std::invalid_argument("set_edge_contact: " + wall.name + " is not a rectangle");
   const Vec3 rel = point_on_edge - wall.origin;
   const double su = rel.dot(wall.axis_u), sv = rel.dot(wall.axis_v);
   constexpr double kTolerance = 1e-9;  // m
-  if (std::abs(su + wall.half_u) < kTolerance) wall.open_edges.u_min = open;
-  else if (std::abs(su - wall.half_u) < kTolerance) wall.open_edges.u_max = open;
-  else if (std::abs(sv + wall.half_v) < kTolerance) wall.open_edges.v_min = open;
-  else if (std::abs(sv - wall.half_v) < kTolerance) wall.open_edges.v_max = open;
-  else throw std::invalid_argument("set_edge_open: no edge of " + wall.name + " passes through the point");
+  if (std::abs(su + wall.half_u) < kTolerance) wall.edges.u_min = contact;
+  else if (std::abs(su - wall.half_u) < kTolerance) wall.edges.u_max = contact;
+  else if (std::abs(sv + wall.half_v) < kTolerance) wall.edges.v_min = contact;
+  else if (std::abs(sv - wall.half_v) < kTolerance) wall.edges.v_max = contact;
+  else throw std::invalid_argument("set_edge_contact: no edge of " + wall.name + " passes through the point");
 }
 
 WallContactGeometry wall_sphere_geometry(const Wall& wall, const Vec3& centre, double radius) {

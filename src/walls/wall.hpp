@@ -3,8 +3,8 @@
 //   plane     - infinite, one-sided: `normal` points into the particle side;
 //   cylinder  - inner surface of a circular cylinder (oedometer envelope), finite along its axis;
 //   rectangle - finite, two-sided plate (shear-box faces, rims, plates); its edges and
-//               corners are part of the surface, so spheres can touch them, except an
-//               edge marked open (below).
+//               corners are part of the surface, so spheres can touch them, from both
+//               sides unless the edge is restricted (RectangleEdges, below).
 #pragma once
 #include <string>
 #include <vector>
@@ -15,16 +15,21 @@ namespace colza {
 enum class WallShape { kPlane, kCylinder, kRectangle };
 const char* to_string(WallShape shape);
 
-// A rectangle's edges that are open: where the sphere's projection on the plate's plane lies
-// beyond such an edge, the plate gives no contact (neither edge nor corner). For an edge the
-// plate shares with another surface that takes the contact there: a coplanar neighbour (the
-// seam between a shear box's upper and lower side walls) or a wall meeting it at a convex
-// corner that keeps the edge (a rim and its side wall). Without it a sphere touching the seam
-// or corner gets one contact from each plate, up to twice the force of one surface.
-struct OpenEdges {
-  bool u_min = false, u_max = false;  // the edges at s_u = -half_u and +half_u
-  bool v_min = false, v_max = false;  // the edges at s_v = -half_v and +half_v
-  bool any() const { return u_min || u_max || v_min || v_max; }
+// What a rectangle's edge gives a sphere whose projection on the plate's plane lies beyond
+// that edge (a corner: beyond two edges, and either may refuse). Without a restriction a
+// sphere touching a seam or corner that two plates share gets one contact from each, up to
+// twice the force of one surface.
+enum class EdgeContact : std::uint8_t {
+  kBothSides,  // the edge or corner touches it from either side of the plate (a free edge)
+  kFrontOnly,  // only on the normal's side (h > 0): the edge of a convex corner whose back is
+               // covered by the plate meeting it there (a shear box's side wall under its rim)
+  kNone,       // nothing: another surface takes the contact there (a coplanar neighbour's
+               // face at a seam, the side wall at a rim's end)
+};
+
+struct RectangleEdges {
+  EdgeContact u_min = EdgeContact::kBothSides, u_max = EdgeContact::kBothSides;  // s_u = -half_u, +half_u
+  EdgeContact v_min = EdgeContact::kBothSides, v_max = EdgeContact::kBothSides;  // s_v = -half_v, +half_v
 };
 
 struct Wall {
@@ -35,7 +40,7 @@ struct Wall {
   Vec3 axis_u = Vec3::UnitX();  // rectangle: unit in-plane axes (orthogonal to normal)
   Vec3 axis_v = Vec3::UnitY();
   double half_u = 0.0, half_v = 0.0;          // rectangle half extents (m)
-  OpenEdges open_edges;                        // rectangle: none by default
+  RectangleEdges edges;                        // rectangle: what each edge gives beyond it
   double radius = 0.0;                         // cylinder inner radius (m)
   double axial_min = 0.0, axial_max = 0.0;     // cylinder extent along its axis from origin (m)
   Vec3 velocity = Vec3::Zero();                // m/s
@@ -66,9 +71,9 @@ struct WallContactGeometry {
 
 WallContactGeometry wall_sphere_geometry(const Wall& wall, const Vec3& centre, double radius);
 
-// Opens (or closes) the edge of rectangle `wall` that passes through `point_on_edge` (a point
-// of the edge's line, e.g. its middle; within 1e-9 m). Throws std::invalid_argument when no
-// edge passes there or the wall is not a rectangle.
-void set_edge_open(Wall& wall, const Vec3& point_on_edge, bool open);
+// Sets what the edge of rectangle `wall` that passes through `point_on_edge` (a point of the
+// edge's line, e.g. its middle; within 1e-9 m) gives beyond it. Throws std::invalid_argument
+// when no edge passes there or the wall is not a rectangle.
+void set_edge_contact(Wall& wall, const Vec3& point_on_edge, EdgeContact contact);
 
 }  // namespace colza

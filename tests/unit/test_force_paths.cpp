@@ -37,7 +37,7 @@ struct Setup {
   bool bonds = false;
   bool walls_only_between_halves = false;  // no integration sums; motion may go into the threaded force loop
   bool shaped_walls = false;  // a cylinder and a rectangle (face, edge and corner contacts) besides planes
-  bool open_plate_edges = false;  // with shaped_walls: two of the rectangle's edges open (walls/wall.hpp)
+  bool restricted_plate_edges = false;  // with shaped_walls: two of the rectangle's edges restricted (walls/wall.hpp)
   double skin = 0.3e-3;       // m; 2.5 mm makes the diagonal lattice neighbours candidates that stay apart
   int rebuild_every = 0;      // > 0: also rebuild the candidate lists every this many steps
 };
@@ -74,9 +74,9 @@ World make_world(const Setup& setup) {
     w.walls[0] = Wall::rectangle("plate", Vec3(lo, 4.5 * spacing, 5.0 * spacing), Vec3::UnitX(), Vec3::UnitY(),
                                  2.5 * spacing - 0.3e-3, 3.0 * spacing - 0.3e-3);
     w.walls[0].velocity = Vec3(0.0, 0.003, 0.001);  // sliding in its plane: slip on the face and edges
-    if (setup.open_plate_edges) {  // the +y and -z edges: no contact beyond them
-      w.walls[0].open_edges.u_max = true;
-      w.walls[0].open_edges.v_min = true;
+    if (setup.restricted_plate_edges) {  // beyond the +y edge no contact, beyond the -z edge only in front
+      w.walls[0].edges.u_max = EdgeContact::kNone;
+      w.walls[0].edges.v_min = EdgeContact::kFrontOnly;
     }
     // A vertical cylinder around the lattice that clips its four corner columns by ~0.1 mm.
     const double centre = 4.5 * spacing;
@@ -341,11 +341,12 @@ TEST(ForcePaths, BatchedWallKernelGivesTheScalarReferenceBitsOnEveryShape) {
   expect_same_pair_energies(batched.ledger, reference.ledger);
 }
 
-TEST(ForcePaths, BatchedWallKernelGivesTheScalarReferenceBitsWithOpenEdges) {
-  // Open edges (the shear box's seams with edge_contacts = "per_surface"): the lanes leave
-  // the spheres beyond them out exactly as the scalar geometry does.
-  const PathRun batched = run_path({.particle_materials = 1, .shaped_walls = true, .open_plate_edges = true}, 1);
-  const PathRun reference = run_path({.particle_materials = 2, .shaped_walls = true, .open_plate_edges = true}, 1);
+TEST(ForcePaths, BatchedWallKernelGivesTheScalarReferenceBitsWithRestrictedEdges) {
+  // Restricted edges (the shear box's seams and corners with edge_contacts = "per_surface"):
+  // the lanes leave the spheres beyond them out exactly as the scalar geometry does.
+  const PathRun batched = run_path({.particle_materials = 1, .shaped_walls = true, .restricted_plate_edges = true}, 1);
+  const PathRun reference =
+      run_path({.particle_materials = 2, .shaped_walls = true, .restricted_plate_edges = true}, 1);
   const PathRun closed = run_path({.particle_materials = 1, .shaped_walls = true}, 1);
   auto touching_plate = [](const World& w) {
     std::size_t n = 0;
@@ -354,7 +355,7 @@ TEST(ForcePaths, BatchedWallKernelGivesTheScalarReferenceBitsWithOpenEdges) {
     return n;
   };
   EXPECT_GT(touching_plate(batched.world), 20u);
-  EXPECT_LT(touching_plate(batched.world), touching_plate(closed.world));  // the open edges' rows are let go
+  EXPECT_LT(touching_plate(batched.world), touching_plate(closed.world));  // the +y edge's row is let go
   expect_same_state(batched.world, reference.world);
   expect_same_pair_energies(batched.ledger, reference.ledger);
 }

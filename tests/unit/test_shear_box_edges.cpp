@@ -1,4 +1,4 @@
-// Where the shear box's plates meet (walls/wall.hpp, OpenEdges; shear_box.edge_contacts): with
+// Where the shear box's plates meet (walls/wall.hpp, RectangleEdges; shear_box.edge_contacts): with
 // "per_wall" every plate touches a sphere on its own, so a sphere at the seam of the upper and
 // lower side walls, or at the convex corner of a rim and its side wall, gets two contacts;
 // with "per_surface" it gets one. One force pass on one sphere, no gravity, 10 um overlap.
@@ -32,7 +32,7 @@ OneSphere touch(const Vec3& centre, BoxEdgeContacts edges, double shear = 0.0) {
   if (shear > 0.0) {
     for (Wall& w : world.walls)
       if (w.name.rfind("lower_", 0) == 0) w.origin.x() += shear;
-    set_aligned_seams_open(world, box, false);
+    set_trailing_and_leading_seams(world, box, false);
   }
   world.particles.add(centre, kR, 1250.0);
   PhysicsSettings s;
@@ -83,6 +83,28 @@ TEST(ShearBoxEdges, ASphereAtARimsConvexCornerTouchesOneEdge) {
   EXPECT_NEAR(per_surface.force.norm(), expected, 1e-9);
   EXPECT_NEAR(per_surface.force.x(), per_surface.force.z(), 1e-12);
   EXPECT_NEAR(per_wall.force.norm(), 2.0 * expected, 1e-9);
+}
+
+TEST(ShearBoxEdges, ASphereOnARimNextToItsCornerTouchesTheRimOnly) {
+  // Lower half moved by 5 mm; a sphere on the lower rim 0.1 mm short of its end (x = 5 mm),
+  // behind the trailing wall's plane: the rim's face holds it. The trailing wall's top edge,
+  // 0.1 mm away too, touches only spheres in front of that wall (per_surface); per wall it
+  // adds an edge contact from behind, nearly doubling the force.
+  const ShearBoxSpec box;
+  const double s = 5e-3;
+  const Vec3 x(s - 1e-4, box.width / 2, box.shear_plane + kR - kOverlap);
+  const OneSphere per_wall = touch(x, BoxEdgeContacts::kPerWall, s);
+  const OneSphere per_surface = touch(x, BoxEdgeContacts::kPerSurface, s);
+  EXPECT_EQ(per_wall.touching_walls.size(), 2u);
+  ASSERT_EQ(per_surface.touching_walls.size(), 1u);
+  EXPECT_NEAR(per_surface.force.z(), kWallKn * kOverlap, 1e-9);
+  EXPECT_NEAR(per_surface.force.x(), 0.0, 1e-12);
+  // The same under the upper rim, just beyond its end at the upper leading wall (x = L).
+  const Vec3 y(box.length + 1e-4, box.width / 2, box.shear_plane - kR + kOverlap);
+  EXPECT_EQ(touch(y, BoxEdgeContacts::kPerWall, s).touching_walls.size(), 2u);
+  const OneSphere under = touch(y, BoxEdgeContacts::kPerSurface, s);
+  ASSERT_EQ(under.touching_walls.size(), 1u);
+  EXPECT_NEAR(under.force.z(), -kWallKn * kOverlap, 1e-9);
 }
 
 TEST(ShearBoxEdges, AlignedTrailingSeamTouchesOneSurfaceUntilTheHalvesMove) {

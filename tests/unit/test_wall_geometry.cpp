@@ -123,21 +123,29 @@ TEST(WallGeometry, RotatedRectangle) {
   expect_vec(g.normal, Vec3(0, -0.8, -0.6), "edge normal");
 }
 
-TEST(WallGeometry, RectangleOpenEdgeGivesNoContactBeyondIt) {
+TEST(WallGeometry, RectangleEdgeRestrictions) {
   Wall w = Wall::rectangle("r", Vec3::Zero(), Vec3::UnitZ(), Vec3::UnitX(), 1.0, 0.5);
-  set_edge_open(w, Vec3(1.0, 0.0, 0.0), true);  // the edge x = +1 (u_max)
-  EXPECT_TRUE(w.open_edges.u_max);
-  EXPECT_FALSE(w.open_edges.u_min || w.open_edges.v_min || w.open_edges.v_max);
-  // Beyond it: no contact (RectangleEdge's sphere a), nor at the corner beyond it.
+  set_edge_contact(w, Vec3(1.0, 0.0, 0.0), EdgeContact::kNone);  // the edge x = +1 (u_max)
+  EXPECT_EQ(w.edges.u_max, EdgeContact::kNone);
+  EXPECT_EQ(w.edges.u_min, EdgeContact::kBothSides);
+  // kNone: beyond it no contact (RectangleEdge's sphere a), nor at the corner beyond it.
   EXPECT_FALSE(wall_sphere_geometry(w, Vec3(1.3, 0.2, 0.0), 0.5).in_range);
   EXPECT_FALSE(wall_sphere_geometry(w, Vec3(1.2, 0.7, 0.1), 0.5).in_range);
-  // On the face up to the edge, and beyond the closed edges, as before.
+  // On the face up to the edge, and beyond the unrestricted edges, as before.
   const Vec3 on_face(0.99, 0.2, 0.3);
   expect_geometry(wall_sphere_geometry(w, on_face, 0.5), on_face, 0.5, 0.2, Vec3::UnitZ(), Vec3(0.99, 0.2, -0.1));
-  const Vec3 beyond_closed(-1.3, 0.2, 0.0);
-  expect_geometry(wall_sphere_geometry(w, beyond_closed, 0.5), beyond_closed, 0.5, 0.2, -Vec3::UnitX(),
+  const Vec3 beyond_free(-1.3, 0.2, 0.0);
+  expect_geometry(wall_sphere_geometry(w, beyond_free, 0.5), beyond_free, 0.5, 0.2, -Vec3::UnitX(),
                   Vec3(-0.9, 0.2, 0.0));
-  set_edge_open(w, Vec3(1.0, -0.3, 0.0), false);  // any point of the edge's line names it
+  // kFrontOnly: beyond the edge, only spheres on the normal's side (h > 0; in the plane, none).
+  set_edge_contact(w, Vec3(1.0, -0.3, 0.0), EdgeContact::kFrontOnly);  // any point of the edge's line names it
+  const Vec3 in_front(1.24, 0.2, 0.32);  // RectangleEdge's sphere b: un = 0.1, n = (0.6, 0, 0.8)
+  const Vec3 n(0.6, 0.0, 0.8);
+  expect_geometry(wall_sphere_geometry(w, in_front, 0.5), in_front, 0.5, 0.1, n, in_front - 0.45 * n);
+  EXPECT_FALSE(wall_sphere_geometry(w, Vec3(1.24, 0.2, -0.32), 0.5).in_range);  // behind
+  EXPECT_FALSE(wall_sphere_geometry(w, Vec3(1.3, 0.2, 0.0), 0.5).in_range);     // in the plane
+  EXPECT_TRUE(wall_sphere_geometry(w, Vec3(0.9, 0.2, -0.3), 0.5).in_range);     // the face, from behind
+  set_edge_contact(w, Vec3(1.0, 0.0, 0.0), EdgeContact::kBothSides);
   EXPECT_TRUE(wall_sphere_geometry(w, Vec3(1.3, 0.2, 0.0), 0.5).in_range);
-  EXPECT_THROW(set_edge_open(w, Vec3(0.5, 0.0, 0.0), true), std::invalid_argument);  // no edge there
+  EXPECT_THROW(set_edge_contact(w, Vec3(0.5, 0.0, 0.0), EdgeContact::kNone), std::invalid_argument);  // no edge there
 }
