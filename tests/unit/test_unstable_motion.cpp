@@ -23,6 +23,19 @@ PhysicsSettings fixed_step_physics(double dt) {
   return s;
 }
 
+// Two spheres of 3 mm on the z axis, the second at height z2 (m); a stepper prepared on
+// them and run for `steps` steps at dt = 1 us.
+struct TwoSpheres {
+  World world;
+  Stepper stepper{fixed_step_physics(1e-6)};
+  TwoSpheres(double z2, int steps) {
+    world.particles.add(Vec3(0.0, 0.0, 0.0), 3e-3, 1250.0);
+    world.particles.add(Vec3(0.0, 0.0, z2), 3e-3, 1250.0);
+    stepper.prepare(world);
+    stepper.run(world, static_cast<std::uint64_t>(steps));
+  }
+};
+
 }  // namespace
 
 TEST(UnstableMotion, FirstNonFinitePositionIsFound) {
@@ -39,15 +52,10 @@ TEST(UnstableMotion, ANaNPositionStopsTheRunWithinACheckIntervalNamingTheTimeSte
   // A NaN never asks for a neighbour rebuild (every comparison with it is false), so the
   // stepper checks the positions every kFiniteCheckInterval steps. (The spheres are apart,
   // so the NaN stays in sphere 1 instead of reaching sphere 0 through a contact.)
-  World w;
-  w.particles.add(Vec3(0.0, 0.0, 0.0), 3e-3, 1250.0);
-  w.particles.add(Vec3(0.0, 0.0, 0.1), 3e-3, 1250.0);
-  Stepper stepper(fixed_step_physics(1e-6));
-  stepper.prepare(w);
-  stepper.run(w, 5);
-  w.particles.position[1].x() = std::numeric_limits<double>::quiet_NaN();
+  TwoSpheres s(0.1, 5);
+  s.world.particles.position[1].x() = std::numeric_limits<double>::quiet_NaN();
   try {
-    stepper.run(w, Stepper::kFiniteCheckInterval);
+    s.stepper.run(s.world, Stepper::kFiniteCheckInterval);
     ADD_FAILURE() << "a NaN position went unnoticed for " << Stepper::kFiniteCheckInterval << " steps";
   } catch (const UnstableMotion& e) {
     const std::string m = e.what();
@@ -58,14 +66,9 @@ TEST(UnstableMotion, ANaNPositionStopsTheRunWithinACheckIntervalNamingTheTimeSte
 }
 
 TEST(UnstableMotion, AnInfinitePositionStopsTheRunBeforeTheNeighbourGridIndexesIt) {
-  World w;
-  w.particles.add(Vec3(0.0, 0.0, 0.0), 3e-3, 1250.0);
-  w.particles.add(Vec3(0.0, 0.0, 0.0059), 3e-3, 1250.0);
-  Stepper stepper(fixed_step_physics(1e-6));
-  stepper.prepare(w);
-  stepper.run(w, 3);
-  w.particles.position[0].z() = -std::numeric_limits<double>::infinity();  // asks for a rebuild at once
-  EXPECT_THROW(stepper.step(w), UnstableMotion);
+  TwoSpheres s(0.0059, 3);
+  s.world.particles.position[0].z() = -std::numeric_limits<double>::infinity();  // asks for a rebuild at once
+  EXPECT_THROW(s.stepper.step(s.world), UnstableMotion);
 }
 
 TEST(NeighbourGrid, SpheresFarApartNeedNoHugeGrid) {
