@@ -663,10 +663,16 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
   }
   r.iterations = iteration;
   r.solution = r.runs[best].x;
-  // The uncertainty comes from planes through the runs nearest the solution, the last run
-  // included (the loop's planes were fitted before it): with n + 2 runs or more they have a
-  // residual degree of freedom, so their error enters the uncertainty.
-  r.surfaces = local_planes(p, r.runs, pool, best, sc, r.surface_points);
+  // The uncertainty comes from the loop's last planes, fitted around the best run before the
+  // last refinement. When they have no residual degree of freedom (the n + 1 start runs,
+  // after a first refinement that hit) or the search stopped on the start design, planes
+  // through the runs nearest the solution, its own included, replace them: with n + 2 runs
+  // they have a residual, whose error then enters the uncertainty. (Refitting every time on the nearest runs was tried:
+  // at convergence they cluster, their slopes are the runs' scatter, and the full-size
+  // compression identity test's mu_pp came out +/- 0.35 instead of +/- 0.04.)
+  bool no_residual = r.surfaces.empty();
+  for (const ResponseSurface& surface : r.surfaces) no_residual = no_residual || surface.degrees_of_freedom() == 0;
+  if (no_residual) r.surfaces = local_planes(p, r.runs, pool, best, sc, r.surface_points);
   surface_warnings(p, r.surfaces, true, r.warnings);
   r.runs[best].role = r.runs[best].role == "design" ? "design+validation" : "validation";
   propagate_uncertainty(p, r.surfaces, r);
