@@ -21,6 +21,13 @@
 
 namespace {
 
+// A run that failed for a reason of its own, not a bug of colza's (exit 1).
+int run_failed(const std::exception& e) {
+  std::fprintf(stderr, "colza: error: %s; the unfinished outputs were removed, earlier results are untouched\n",
+               e.what());
+  return 1;
+}
+
 // Worker threads when --threads is not given: OMP_NUM_THREADS if set, else the machine's
 // cores shared among the concurrent jobs. The simulation is the same bit for bit at any
 // count (ARCHITECTURE.md, Performance; only the damping-energy total is summed per thread
@@ -158,13 +165,9 @@ int main(int argc, char** argv) {
                  e.what());
     return 128 + e.signal_number();
   } catch (const colza::UnstableMotion& e) {  // a time step above the critical one, say
-    std::fprintf(stderr, "colza: error: %s; the unfinished outputs were removed, earlier results are untouched\n",
-                 e.what());
-    return 1;
-  } catch (const colza::OutputWriteError& e) {  // a full disk, say (HDF5's too): not colza's fault
-    std::fprintf(stderr, "colza: error: %s; the unfinished outputs were removed, earlier results are untouched\n",
-                 e.what());
-    return 1;
+    return run_failed(e);
+  } catch (const colza::OutputWriteError& e) {  // a full disk, say (HDF5's too)
+    return run_failed(e);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "colza: internal error: %s\n", e.what());
     return 1;

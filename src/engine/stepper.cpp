@@ -31,9 +31,10 @@ Stepper::Stepper(PhysicsSettings physics)
 void Stepper::prepare(World& world) {
   require_finite_positions(world);
   rebuild_neighbours(world);
-  update_time_step(world, CountedContacts::kTouchingOrOverlapping);
+  // Evaluated whatever the dt setting: a fixed dt is judged against it if the motion blows up.
   critical_dt_at_prepare_ = critical_time_step(world.particles, world.walls, world.contacts, pairs_,
                                                CountedContacts::kTouchingOrOverlapping);
+  set_time_step(world, critical_dt_at_prepare_);
 }
 
 void Stepper::require_finite_positions(const World& world) const {
@@ -52,10 +53,13 @@ void Stepper::require_finite_positions(const World& world) const {
 }
 
 void Stepper::update_time_step(World& world, CountedContacts counted) {
-  world.dt = physics_.time_step.automatic
-                 ? physics_.time_step.safety_factor *
-                       critical_time_step(world.particles, world.walls, world.contacts, pairs_, counted)
-                 : physics_.time_step.fixed_dt;
+  set_time_step(world, physics_.time_step.automatic
+                           ? critical_time_step(world.particles, world.walls, world.contacts, pairs_, counted)
+                           : 0.0);
+}
+
+void Stepper::set_time_step(World& world, double critical) {
+  world.dt = physics_.time_step.automatic ? physics_.time_step.safety_factor * critical : physics_.time_step.fixed_dt;
   time_step_set_at_ = world.step;
 }
 
@@ -346,11 +350,11 @@ void Stepper::begin_step(World& world) {
   if (physics_.time_step.automatic && physics_.time_step.recompute_interval > 0 &&
       world.step % physics_.time_step.recompute_interval == 0 && time_step_set_at_ != world.step)
     update_time_step(world);
-  if (world.step % kFiniteCheckInterval == 0) require_finite_positions(world);  // a NaN never asks for a rebuild
-  if (neighbours_.needs_rebuild(world.particles, world.walls)) {
-    require_finite_positions(world);  // the cell grid cannot index a non-finite coordinate
-    neighbours_.rebuild(world.particles, world.walls, world.contacts, worker_threads());
-  }
+  // Finite positions: before a rebuild (the cell grid cannot index a non-finite coordinate)
+  // and every kFiniteCheckInterval steps (a NaN never asks for a rebuild).
+  const bool rebuild = neighbours_.needs_rebuild(world.particles, world.walls);
+  if (rebuild || world.step % kFiniteCheckInterval == 0) require_finite_positions(world);
+  if (rebuild) neighbours_.rebuild(world.particles, world.walls, world.contacts, worker_threads());
   compute_forces(world);
 }
 

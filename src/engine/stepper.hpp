@@ -25,7 +25,7 @@ class Stepper {
   // estimate counting the pairs that overlap now as contacts: no force pass has marked them
   // yet). The periodic re-evaluation does not repeat it at the same step.
   // Steps check that positions are finite (every kFiniteCheckInterval steps and before each
-  // neighbour rebuild) and throw UnstableMotion (engine/unstable_motion.hpp) naming the
+  // neighbour rebuild) and throw UnstableMotion (core/unstable_motion.hpp) naming the
   // particle, dt and the critical estimate of the last prepare() when they are not.
   void prepare(World& world);
   static constexpr std::uint64_t kFiniteCheckInterval = 100;
@@ -92,6 +92,8 @@ class Stepper {
  private:
   void compute_forces(World& world);
   void require_finite_positions(const World& world) const;
+  // world.dt = safety factor x `critical` (automatic), or the fixed dt (`critical` unused).
+  void set_time_step(World& world, double critical);
   PhysicsSettings physics_;
   PairTable pairs_;
   NeighbourSearch neighbours_;

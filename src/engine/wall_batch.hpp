@@ -94,11 +94,9 @@ template <WallShape kShape>
     // Beyond a restricted edge: no contact (kNone), or none behind the plate (kFrontOnly).
     const RectangleEdges& e = wall.edges;
     const bool behind = !(along_normal > 0.0);
-    const auto refuses = [behind](EdgeContact c) {
-      return (c == EdgeContact::kNone) | ((c == EdgeContact::kFrontOnly) & behind);
-    };
-    const bool refused = ((su < lo_u) & refuses(e.u_min)) | ((su > wall.half_u) & refuses(e.u_max)) |
-                         ((sv < lo_v) & refuses(e.v_min)) | ((sv > wall.half_v) & refuses(e.v_max));
+    const bool refused =
+        ((su < lo_u) & edge_refuses(e.u_min, behind)) | ((su > wall.half_u) & edge_refuses(e.u_max, behind)) |
+        ((sv < lo_v) & edge_refuses(e.v_min, behind)) | ((sv > wall.half_v) & edge_refuses(e.v_max, behind));
     // std::clamp(s, lo, hi) = s < lo ? lo : (hi < s ? hi : s)
     const double cu = su < lo_u ? lo_u : (wall.half_u < su ? wall.half_u : su);
     const double cv = sv < lo_v ? lo_v : (wall.half_v < sv ? wall.half_v : sv);

@@ -26,6 +26,13 @@ Wall& wall_named(World& world, const std::string& name) {
   throw std::logic_error("shear box: no wall named " + name);
 }
 
+// Sets the edge of side wall `name` that lies on the shear plane (z = shear_plane, through
+// the wall's centre line).
+void set_shear_plane_edge(World& world, const std::string& name, double shear_plane, EdgeContact contact) {
+  Wall& w = wall_named(world, name);
+  set_edge_contact(w, Vec3(w.origin.x(), w.origin.y(), shear_plane), contact);
+}
+
 }  // namespace
 
 ShearBoxWalls build_shear_box(World& world, const ShearBoxSpec& b, double wall_top) {
@@ -57,10 +64,8 @@ ShearBoxWalls build_shear_box(World& world, const ShearBoxSpec& b, double wall_t
   if (b.edge_contacts == BoxEdgeContacts::kPerSurface) {
     // The front and back seams stay coplanar as the lower half slides along them: the plate
     // whose face the sphere's projection falls on takes the contact.
-    for (const char* name : {"lower_front", "lower_back", "upper_front", "upper_back"}) {
-      Wall& w = wall_named(world, name);
-      set_edge_contact(w, Vec3(w.origin.x(), w.origin.y(), sp), EdgeContact::kNone);
-    }
+    for (const char* name : {"lower_front", "lower_back", "upper_front", "upper_back"})
+      set_shear_plane_edge(world, name, sp, EdgeContact::kNone);
     // Each rim hands its end at the side wall to that wall's edge, the convex corner.
     Wall& lower_rim = wall_named(world, "lower_rim");
     set_edge_contact(lower_rim, Vec3(lower_rim.origin.x() + b.rim_length / 2, W / 2, sp), EdgeContact::kNone);
@@ -73,10 +78,7 @@ ShearBoxWalls build_shear_box(World& world, const ShearBoxSpec& b, double wall_t
 
 void set_trailing_and_leading_seams(World& world, const ShearBoxSpec& b, bool halves_aligned) {
   if (b.edge_contacts != BoxEdgeContacts::kPerSurface) return;
-  auto set = [&](const char* name, EdgeContact contact) {
-    Wall& w = wall_named(world, name);
-    set_edge_contact(w, Vec3(w.origin.x(), w.origin.y(), b.shear_plane), contact);
-  };
+  auto set = [&](const char* name, EdgeContact contact) { set_shear_plane_edge(world, name, b.shear_plane, contact); };
   if (halves_aligned) {  // coplanar plates: the one whose face the projection falls on
     for (const char* name : {"lower_trailing", "lower_leading", "upper_trailing", "upper_leading"})
       set(name, EdgeContact::kNone);

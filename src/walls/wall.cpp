@@ -84,12 +84,10 @@ WallContactGeometry rectangle_geometry(const Wall& w, const Vec3& x, double r) {
   const double su = rel.dot(w.axis_u), sv = rel.dot(w.axis_v);
   const double h = rel.dot(w.normal);
   // Beyond a restricted edge: no contact there (kNone), or none behind the plate (kFrontOnly).
-  const auto refuses = [&](EdgeContact e) {
-    return e == EdgeContact::kNone || (e == EdgeContact::kFrontOnly && !(h > 0.0));
-  };
+  const bool behind = !(h > 0.0);
   const RectangleEdges& edges = w.edges;
-  if ((su < -w.half_u && refuses(edges.u_min)) || (su > w.half_u && refuses(edges.u_max)) ||
-      (sv < -w.half_v && refuses(edges.v_min)) || (sv > w.half_v && refuses(edges.v_max)))
+  if ((su < -w.half_u && edge_refuses(edges.u_min, behind)) || (su > w.half_u && edge_refuses(edges.u_max, behind)) ||
+      (sv < -w.half_v && edge_refuses(edges.v_min, behind)) || (sv > w.half_v && edge_refuses(edges.v_max, behind)))
     return {};
   const double cu = std::clamp(su, -w.half_u, w.half_u), cv = std::clamp(sv, -w.half_v, w.half_v);
   if (cu == su && cv == sv) {  // projection on the face: plate seen from whichever side the sphere is

@@ -27,6 +27,13 @@ enum class EdgeContact : std::uint8_t {
                // face at a seam, the side wall at a rim's end)
 };
 
+// Whether an edge in state `e` refuses a sphere whose projection lies beyond it; `behind`:
+// the sphere is not on the plate's normal side (h <= 0). Shared by the scalar geometry and
+// the lanes (engine/wall_batch.hpp), bitwise so that the lanes stay branch-free.
+inline bool edge_refuses(EdgeContact e, bool behind) {
+  return (e == EdgeContact::kNone) | ((e == EdgeContact::kFrontOnly) & behind);
+}
+
 struct RectangleEdges {
   EdgeContact u_min = EdgeContact::kBothSides, u_max = EdgeContact::kBothSides;  // s_u = -half_u, +half_u
   EdgeContact v_min = EdgeContact::kBothSides, v_max = EdgeContact::kBothSides;  // s_v = -half_v, +half_v
