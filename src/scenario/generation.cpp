@@ -63,7 +63,14 @@ std::vector<PackedSphere> generate_spheres(const GenerationRequest& req) {
     bool ok = false;
     Vec3 x;
     while (!ok && failures < req.max_attempts) {
-      x = Vec3(lo.x() + span.x() * unit(engine), lo.y() + span.y() * unit(engine), lo.z() + span.z() * unit(engine));
+      // Named draws, in a fixed order: the arguments of one call are evaluated in an order the
+      // language leaves open (GCC 12 took them right to left, clang left to right), which
+      // would make the packing depend on the compiler. z, y, x is the order colza's packings
+      // have always had (tests/unit/generation_reference.py regenerates them independently).
+      const double u_z = unit(engine);
+      const double u_y = unit(engine);
+      const double u_x = unit(engine);
+      x = Vec3(lo.x() + span.x() * u_x, lo.y() + span.y() * u_y, lo.z() + span.z() * u_z);
       ok = req.region.contains(x, r);
       const int cx = coord(x, 0), cy = coord(x, 1), cz = coord(x, 2);
       for (int z = std::max(0, cz - 1); ok && z <= std::min(dims[2] - 1, cz + 1); ++z)

@@ -2,7 +2,9 @@
 // Diameters are uniform on [d_min, d_max]; centres uniform in the region, rejected if the
 // sphere would cross the region's boundary or overlap an earlier sphere (random sequential
 // addition). Boost.Random (mt19937_64 + uniform_real_distribution) is used because its output
-// is specified exactly, so the same seed gives the same packing on every machine.
+// is specified exactly, and the draws are made in a fixed order (a sphere's diameter, then
+// its centre's z, y, x), so the same seed gives the same packing on every machine and with
+// every compiler (test GenerationReference.*, from tests/unit/generation_reference.py).
 #pragma once
 #include <cstdint>
 #include <vector>
