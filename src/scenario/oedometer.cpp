@@ -50,32 +50,50 @@ double total_mass(const ParticleArrays& p) {
   return m;
 }
 
+// A new sample: generated in the generation volume, settled, cut at the rim and stored in
+// space order, then handed on at rest (no velocities, no spins, no contact histories), which
+// is exactly the sample its packing file gives back. So a run from the `packing.txt` a run
+// wrote repeats that run's loading bit for bit, the YADE cross-check (which reads the packing
+// file) starts from the state colza's own runs start from, and the shear box does the same.
+ParticleArrays settled_sample_at_rest(const RunConfig& c, OedometerResult& r, Progress& progress, StageClock& clock) {
+  Stepper stepper(make_physics(c));
+  World world;
+  build_oedometer_container(world, c.oedometer);
+  place_sample(world, c);
+  r.particles_generated = world.particles.size();
+  r.settling = settle_generated_sample(world, stepper, c.sample, progress);
+  clock.count_steps(r.settling.steps, r.particles_generated);
+  discard_above(world, stepper, c.oedometer.cylinder_height);
+  store_in_space_order(world, stepper);
+  if (world.particles.size() == 0) throw no_sphere_left_error(c, stepper, "below the rim");
+  ParticleArrays at_rest;
+  for (std::size_t i = 0; i < world.particles.size(); ++i)
+    at_rest.add(world.particles.position[i], world.particles.radius[i], c.particle.density);
+  return at_rest;
+}
+
 }  // namespace
 
 OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   OedometerResult r;
   const OedometerSpec& o = c.oedometer;
-  Stepper stepper(make_physics(c));
   World world;
   build_oedometer_container(world, o);
 
-  // --- preparation: generation and settling ---------------------------------------
+  // --- preparation: a settled sample at rest, new or from a packing file --------------
   StageClock prep_clock("settling");
   if (o.packing_file.empty()) {
-    place_sample(world, c);
-    r.particles_generated = world.particles.size();
-    r.settling = settle_generated_sample(world, stepper, c.sample, progress);
-    prep_clock.count_steps(r.settling.steps, r.particles_generated);
-  } else {  // start from a settled packing, at rest
+    world.particles = settled_sample_at_rest(c, r, progress, prep_clock);
+  } else {
     for (const PackedSphere& s : read_packing(o.packing_file, "oedometer.packing_file"))
       world.particles.add(s.position, s.radius, c.particle.density);
     r.particles_generated = world.particles.size();
     r.settling.converged = true;
-    stepper.prepare(world);
   }
+  Stepper stepper(make_physics(c));
+  stepper.prepare(world);
   if (c.contact.bond_install == BondInstallMoment::kAfterSettling) r.bonds_installed = install_bonds(world, stepper, c.contact.bond_gap);
-  discard_above(world, stepper, o.cylinder_height);
-  if (o.packing_file.empty()) store_in_space_order(world, stepper);
+  discard_above(world, stepper, o.cylinder_height);  // a packing file may reach above the rim; a new sample does not
   r.particles = world.particles.size();
   r.stages.push_back(prep_clock.finish());
   if (r.particles == 0)
