@@ -1,5 +1,6 @@
 #include "analysis/mohr_coulomb.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -30,7 +31,8 @@ MohrCoulombFit fit_mohr_coulomb(const std::vector<double>& sigma, const std::vec
   f.slope = sxy / sxx;
   f.cohesion = mt - f.slope * ms;
   f.friction_angle_deg = std::atan(f.slope) * 180.0 / kPi;
-  f.r2 = syy > 0.0 ? sxy * sxy / (sxx * syy) : 1.0;
+  // r^2 = sxy^2 / (sxx syy) <= 1 (Cauchy-Schwarz); rounding can put it a hair above 1 (two loads).
+  f.r2 = syy > 0.0 ? std::min(1.0, sxy * sxy / (sxx * syy)) : 1.0;
   f.degrees_of_freedom = static_cast<int>(n) - 2;
   if (f.degrees_of_freedom == 0) {
     f.cohesion_se = f.slope_se = f.friction_angle_se_deg = std::numeric_limits<double>::quiet_NaN();

@@ -6,8 +6,10 @@
 // d_k the shear displacement (m) and tau_k the shear stress (Pa) of sample k; the window
 // [d_start, d_end] is shear_box.strength_window_start/end (default 20-30 mm, the stationary
 // part of the curve). One definition for both sides of a calibration: colza's shear box adds
-// every time step (even displacement steps: the lower half moves at constant speed), a
-// measured curve adds its rows (so it should be sampled at even displacement steps too).
+// every time step (displacement steps of v dt, the lower half moving at constant speed v;
+// with the automatic time step dt varies by ~10 %, which moves the mean by ~1e-4 relative
+// against a displacement-weighted mean), a measured curve adds its rows (so it should be
+// sampled at even displacement steps).
 #pragma once
 #include <cstddef>
 #include <vector>

@@ -21,6 +21,14 @@ TEST(MohrCoulomb, RecoversAKnownLineExactly) {
   EXPECT_NEAR(fit.r2, 1.0, 1e-12);
 }
 
+TEST(MohrCoulomb, TwoLoadsGiveAnR2OfExactlyOne) {
+  // r^2 = Sxy^2 / (Sxx Syy) is 1 for any two points, but rounded it comes out at
+  // 1.0000000000000002 for these (found by evaluating the sums in IEEE doubles in Python);
+  // an r^2 above 1 is not a coefficient of determination, so the fit caps it.
+  const auto fit = fit_mohr_coulomb({25750.0, 78750.0}, {32913.238569298424, 30202.761029576868});
+  EXPECT_EQ(fit.r2, 1.0);
+}
+
 TEST(MohrCoulomb, LeastSquaresThroughScatter) {
   // Symmetric scatter +-d about tau = 1000 + 0.5 sigma at sigma = 0, 1, 2, 3 (with signs
   // +, -, -, +) leaves slope and intercept unchanged: sum of (x - mean) * e = 0 and sum e = 0.
