@@ -1,14 +1,21 @@
 // The three comparisons of crosscheck (README.md, "What is compared"), each adding its rows
 // to the report: the micro scenes, the oedometer and the shear box.
 #pragma once
+#include <limits>
+#include <map>
 #include <string>
 #include <toml++/toml.h>
 #include "code_runs.hpp"
 #include "options.hpp"
 #include "report.hpp"
+#include "result_files.hpp"
 #include "speed_tally.hpp"
 
 namespace crosscheck {
+
+// A key missing from a summary reads as this NaN, so the row comparing it fails
+// (Report::check) instead of passing on a default that happens to agree.
+inline constexpr double kMissingValue = std::numeric_limits<double>::quiet_NaN();
 
 // What every check uses: the options, the tolerance table, the runs of both codes, and the
 // speed tally the loadings add to.
@@ -35,5 +42,26 @@ void check_micro(const CheckContext& ctx, Report& report);
 void check_oedometer(const CheckContext& ctx, Report& report, const std::string& size);
 // The direct shear box ([shear.<size>]): deterministic start, every load, C and Phi.
 void check_shear(const CheckContext& ctx, Report& report, const std::string& size);
+
+// The comparisons behind the checks, on results already read (the unit tests feed them
+// made-up ones). A value of either code that is not finite fails its row (Report::check).
+//
+// One micro scene's series.csv of each code: per quantity kind the worst particle's (and wall
+// force's) max |colza - YADE| / max(max |colza signal|, floor[kind]) against `relative`, and
+// the contact counts against `contacts_tol`. Throws std::runtime_error if the two series have
+// different columns, rows or steps.
+void compare_scene_series(Report& report, const std::string& scene, const Csv& c, const Csv& y, double relative,
+                          double contacts_tol, const std::map<std::string, double>& floor);
+// One oedometer loading's curve.csv and summary.json of each code by [oedometer.<size>] `t`:
+// the same start (particles, contacts), the first rows (must coincide), the rms difference of
+// the force over the logged range (from the fit's lower force of `config` to the smaller final
+// travel), the force at the travels, and YADE's foreign_patch_contacts, which must be 0.
+void compare_oedometer_curves(Report& report, const std::string& label, const Csv& c, const Csv& y,
+                              const toml::table& t, const nlohmann::json& cs, const nlohmann::json& ys,
+                              const fs::path& config);
+// The shear box's deterministic start, curve.csv of each code: shear and normal stress (max
+// |diff| / max) against `relative`, contacts and bonds exactly. Throws std::runtime_error if
+// the row counts differ.
+void compare_shear_start(Report& report, const std::string& label, const Csv& c, const Csv& y, double relative);
 
 }  // namespace crosscheck

@@ -8,7 +8,9 @@
 namespace crosscheck {
 
 double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
-  if (xs.empty() || x < xs.front() || x > xs.back()) return std::numeric_limits<double>::quiet_NaN();
+  // Written as "not inside" so that a NaN x is outside too (x < front and x > back are both
+  // false for it, and lower_bound would then give ys[0]).
+  if (xs.empty() || !(x >= xs.front() && x <= xs.back())) return std::numeric_limits<double>::quiet_NaN();
   const auto it = std::lower_bound(xs.begin(), xs.end(), x);
   const std::size_t i = static_cast<std::size_t>(it - xs.begin());
   if (i == 0) return ys[0];
@@ -16,14 +18,27 @@ double interpolate(const std::vector<double>& xs, const std::vector<double>& ys,
   return ys[i - 1] + t * (ys[i] - ys[i - 1]);
 }
 
+double max_magnitude(double so_far, double value) {
+  if (std::isnan(so_far) || !std::isfinite(value)) return std::numeric_limits<double>::quiet_NaN();
+  return std::max(so_far, std::abs(value));
+}
+
+double relative_difference(double num, double den) {
+  if (!std::isfinite(num) || !std::isfinite(den)) return std::numeric_limits<double>::infinity();
+  if (den > 0.0) return num / den;
+  return num == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+}
+
 RmsDifference rms_difference(const std::vector<double>& cx, const std::vector<double>& cy,
                              const std::vector<double>& yx, const std::vector<double>& yy, double lo, double hi) {
   double sq_diff = 0.0, sq = 0.0, sq_y = 0.0;
   std::size_t n = 0;
+  bool all_finite = true;
   for (std::size_t r = 0; r < cx.size(); ++r) {
     if (!(cx[r] >= lo) || cx[r] > hi) continue;
+    if (yx.empty() || !(cx[r] >= yx.front() && cx[r] <= yx.back())) continue;  // y is not defined there
     const double fy = interpolate(yx, yy, cx[r]);
-    if (!std::isfinite(fy)) continue;
+    if (!std::isfinite(fy) || !std::isfinite(cy[r])) all_finite = false;
     sq_diff += (cy[r] - fy) * (cy[r] - fy);
     sq += cy[r] * cy[r];
     sq_y += fy * fy;
@@ -33,18 +48,19 @@ RmsDifference rms_difference(const std::vector<double>& cx, const std::vector<do
   d.n = n;
   d.rms_colza = std::sqrt(sq / std::max<std::size_t>(n, 1));
   d.rms_yade = std::sqrt(sq_y / std::max<std::size_t>(n, 1));
-  d.relative = (n > 0 && sq > 0) ? std::sqrt(sq_diff / sq) : std::numeric_limits<double>::quiet_NaN();
+  if (!all_finite) d.relative = std::numeric_limits<double>::infinity();
+  else d.relative = (n > 0 && sq > 0) ? std::sqrt(sq_diff / sq) : std::numeric_limits<double>::quiet_NaN();
   return d;
 }
 
 MaxDifference max_difference(const std::vector<double>& c, const std::vector<double>& y, std::size_t rows) {
   double num = 0.0, den = 0.0, max_y = 0.0;
   for (std::size_t r = 0; r < rows; ++r) {
-    num = std::max(num, std::abs(c[r] - y[r]));
-    den = std::max(den, std::abs(c[r]));
-    max_y = std::max(max_y, std::abs(y[r]));
+    num = max_magnitude(num, c[r] - y[r]);
+    den = max_magnitude(den, c[r]);
+    max_y = max_magnitude(max_y, y[r]);
   }
-  return {den, max_y, den > 0 ? num / den : 0.0};
+  return {den, max_y, relative_difference(num, den)};
 }
 
 LineWeights line_weights(const std::vector<double>& x) {

@@ -7,15 +7,13 @@
 #include <string>
 #include <tuple>
 #include "checks.hpp"
+#include "curve_math.hpp"
 #include "result_files.hpp"
 
 namespace crosscheck {
 
-namespace {
-
-// Micro: per particle and quantity (and per wall force), max |diff| / max(max |colza|, floor).
-void compare_series(Report& report, const std::string& scene, const Csv& c, const Csv& y, double rel,
-                    double contacts_tol, const std::map<std::string, double>& floor) {
+void compare_scene_series(Report& report, const std::string& scene, const Csv& c, const Csv& y, double rel,
+                          double contacts_tol, const std::map<std::string, double>& floor) {
   if (c.names != y.names) throw std::runtime_error("the two series.csv have different columns");
   if (c.rows() != y.rows() || c.rows() == 0) throw std::runtime_error("different or no rows");
   if (c.at("step") != y.at("step")) throw std::runtime_error("rows are not at the same steps");
@@ -34,13 +32,17 @@ void compare_series(Report& report, const std::string& scene, const Csv& c, cons
       const auto& cc = c.at(stem + a);
       const auto& yc = y.at(stem + a);
       const double c0 = displacement ? cc[0] : 0.0, y0 = displacement ? yc[0] : 0.0;
+      // max_magnitude, not std::max: a NaN must not be skipped (an all-NaN YADE series passed)
       for (std::size_t r = 0; r < cc.size(); ++r) {
-        num = std::max(num, std::abs(cc[r] - yc[r]));
-        cmax = std::max(cmax, std::abs(cc[r] - c0));
-        ymax = std::max(ymax, std::abs(yc[r] - y0));
+        num = max_magnitude(num, cc[r] - yc[r]);
+        cmax = max_magnitude(cmax, cc[r] - c0);
+        ymax = max_magnitude(ymax, yc[r] - y0);
       }
     }
-    const double metric = num / std::max(cmax, fl);
+    // The floor stands for the signal when colza's is smaller (a zero torque by symmetry); with
+    // a zero floor a zero signal agrees only with a zero difference (relative_difference). A NaN
+    // cmax (a value not finite) gives +inf whatever the floor.
+    const double metric = relative_difference(num, std::isnan(cmax) ? cmax : std::max(cmax, fl));
     auto& w = worst[kind];
     if (std::get<3>(w).empty() || metric > std::get<0>(w) || (metric == std::get<0>(w) && cmax > std::get<1>(w)))
       w = {metric, cmax, ymax, who};
@@ -68,16 +70,14 @@ void compare_series(Report& report, const std::string& scene, const Csv& c, cons
   }
   const auto& cc = c.at("contacts");
   const auto& yc = y.at("contacts");
-  double dmax = 0.0, cm = 0.0, ym = 0.0;
+  double dmax = 0.0, cm = 0.0, ym = 0.0;  // counts >= 0; NaN once a count is not finite
   for (std::size_t r = 0; r < cc.size(); ++r) {
-    dmax = std::max(dmax, std::abs(cc[r] - yc[r]));
-    cm = std::max(cm, cc[r]);
-    ym = std::max(ym, yc[r]);
+    dmax = max_magnitude(dmax, cc[r] - yc[r]);
+    cm = max_magnitude(cm, cc[r]);
+    ym = max_magnitude(ym, yc[r]);
   }
   report.check(scene + " contacts (max count, max |diff|)", cm, ym, dmax, contacts_tol, "%.0f");
 }
-
-}  // namespace
 
 void check_micro(const CheckContext& ctx, Report& report) {
   const fs::path scenes = ctx.opt.source / "crosscheck" / "scenes";
@@ -104,8 +104,8 @@ void check_micro(const CheckContext& ctx, Report& report) {
       continue;
     }
     try {
-      compare_series(report, name, read_csv(c_out / "series.csv"), read_csv(y_out / "series.csv"), rel, contacts_tol,
-                     floor);
+      compare_scene_series(report, name, read_csv(c_out / "series.csv"), read_csv(y_out / "series.csv"), rel,
+                           contacts_tol, floor);
     } catch (const std::exception& e) {
       report.fail(name, e.what());
     }

@@ -15,7 +15,15 @@ std::string fmt(double v, const char* f) {
 void Report::check(const std::string& metric, double colza, double yade, double difference, double tolerance,
                    const char* f) {
   Row r{metric, fmt(colza, f), fmt(yade, f), fmt(difference, "%.3e"), fmt(tolerance, "%.1e"), false, false};
-  r.pass = std::isfinite(difference) && difference <= tolerance;
+  // The checks pass a maximum that is NaN when a value behind it was not finite
+  // (max_magnitude); such a row must fail whatever its difference, and say why rather than
+  // show "nan" as a difference.
+  const bool colza_finite = std::isfinite(colza), yade_finite = std::isfinite(yade);
+  r.pass = colza_finite && yade_finite && std::isfinite(difference) && difference <= tolerance;
+  if (!colza_finite || !yade_finite)
+    r.difference = !colza_finite && !yade_finite ? "colza's and YADE's values not finite"
+                   : !colza_finite               ? "a colza value not finite"
+                                                 : "a YADE value not finite";
   add(r);
 }
 

@@ -20,7 +20,9 @@ std::string fmt(double v, const char* f = "%.4g");
 class Report {
  public:
   void add(Row r) { rows_.push_back(std::move(r)); }
-  // A row that passes when difference <= tolerance (a NaN or infinite difference fails).
+  // A row that passes when difference <= tolerance (a NaN or infinite difference fails). A
+  // colza or YADE value that is not finite fails it too, and its difference column then says
+  // which code's value was not finite.
   void check(const std::string& metric, double colza, double yade, double difference, double tolerance,
              const char* f = "%.4g");
   void fail(const std::string& metric, const std::string& why) { add(Row{metric, "-", "-", why, "-", false, false}); }
@@ -29,6 +31,7 @@ class Report {
   }
   void note(const std::string& text) { notes_.push_back(text); }
   bool all_passed() const;
+  const std::vector<Row>& rows() const { return rows_; }
   void print() const;
 
  private:

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -20,6 +21,27 @@
 #include "shear_setting.hpp"
 
 namespace crosscheck {
+
+void compare_shear_start(Report& report, const std::string& label, const Csv& c, const Csv& y, double relative) {
+  if (c.rows() != y.rows() || c.rows() == 0) throw std::runtime_error("different numbers of curve rows");
+  for (const char* q : {"shear_stress", "normal_stress"}) {
+    const MaxDifference d = max_difference(c.at(q), y.at(q), c.rows());
+    report.check(label + " start, " + q + " (" + std::to_string(c.rows()) + " rows, max |diff| / max)", d.max_colza,
+                 d.max_yade, d.relative, relative);
+  }
+  // max_magnitude, not std::max, so that a count that is not finite is not skipped; each code's
+  // shown count (its last contact count) is NaN then, and the row says which code's was.
+  double dmax = 0.0, c_max_count = 0.0, y_max_count = 0.0;
+  for (std::size_t r = 0; r < c.rows(); ++r)
+    for (const char* q : {"contacts", "bonds"}) {
+      dmax = max_magnitude(dmax, c.at(q)[r] - y.at(q)[r]);
+      c_max_count = max_magnitude(c_max_count, c.at(q)[r]);
+      y_max_count = max_magnitude(y_max_count, y.at(q)[r]);
+    }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  report.check(label + " start, contacts and bonds (max |diff|)", std::isnan(c_max_count) ? nan : c.at("contacts").back(),
+               std::isnan(y_max_count) ? nan : y.at("contacts").back(), dmax, 0.0, "%.0f");
+}
 
 namespace {
 
@@ -96,18 +118,8 @@ void compare_deterministic_start(const CheckContext& ctx, const ShearSetting& s,
     return;
   }
   try {
-    const Csv c = read_csv(c_out / "curve.csv"), y = read_csv(y_out / "curve.csv");
-    if (c.rows() != y.rows() || c.rows() == 0) throw std::runtime_error("different numbers of curve rows");
-    for (const char* q : {"shear_stress", "normal_stress"}) {
-      const MaxDifference d = max_difference(c.at(q), y.at(q), c.rows());
-      report.check(s.label + " start, " + q + " (" + std::to_string(c.rows()) + " rows, max |diff| / max)",
-                   d.max_colza, d.max_yade, d.relative, tol_number(s.t, "early_relative", 1e-6));
-    }
-    double dmax = 0.0;
-    for (std::size_t r = 0; r < c.rows(); ++r)
-      for (const char* q : {"contacts", "bonds"}) dmax = std::max(dmax, std::abs(c.at(q)[r] - y.at(q)[r]));
-    report.check(s.label + " start, contacts and bonds (max |diff|)", c.at("contacts").back(), y.at("contacts").back(),
-                 dmax, 0.0, "%.0f");
+    compare_shear_start(report, s.label, read_csv(c_out / "curve.csv"), read_csv(y_out / "curve.csv"),
+                        tol_number(s.t, "early_relative", 1e-6));
   } catch (const std::exception& ex) {
     report.fail(s.label + " deterministic start", ex.what());
   }
@@ -144,8 +156,8 @@ std::optional<std::pair<double, double>> compare_load(const CheckContext& ctx, c
   try {
     const auto cs = read_json(c_out / "summary.json"), ys = read_json(y_out / "summary.json");
     const Csv c = read_csv(c_out / "curve.csv"), y = read_csv(y_out / "curve.csv");
-    report.check(l + " particles", cs.value("particles", 0.0), ys.value("particles", 0.0),
-                 std::abs(cs.value("particles", 0.0) - ys.value("particles", 0.0)), 0.0, "%.0f");
+    report.check(l + " particles", cs.value("particles", kMissingValue), ys.value("particles", kMissingValue),
+                 std::abs(cs.value("particles", kMissingValue) - ys.value("particles", kMissingValue)), 0.0, "%.0f");
     const bool both = cs.value("consolidated", false) && ys.value("consolidated", false);
     report.add(Row{l + " consolidated", cs.value("consolidated", false) ? "yes" : "no",
                    ys.value("consolidated", false) ? "yes" : "no", "-", "both", both, false});
@@ -164,7 +176,7 @@ std::optional<std::pair<double, double>> compare_load(const CheckContext& ctx, c
                           l + " shear stress rms difference / rms (" + std::to_string(d.n) + " rows, " +
                               fmt(1e3 * window_start, "%.2f") + "-" + fmt(1e3 * window_end, "%.2f") + " mm, kPa)",
                           1e-3 * d.rms_colza, 1e-3 * d.rms_yade, d.relative, s, "curve_rms_relative", 0.2, "%.4g");
-    const double c_out_n = cs.value("particles_outside", 0.0), y_out_n = ys.value("particles_outside", 0.0);
+    const double c_out_n = cs.value("particles_outside", kMissingValue), y_out_n = ys.value("particles_outside", kMissingValue);
     report.add(Row{l + " particles outside the box", fmt(c_out_n, "%.0f"), fmt(y_out_n, "%.0f"), "-", "0",
                    c_out_n == 0.0 && y_out_n == 0.0, false});
     return std::make_pair(c_tau, y_tau);

@@ -1,6 +1,7 @@
 #include "tolerances.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <map>
 #include <set>
@@ -165,8 +166,15 @@ toml::table read_tolerances(const fs::path& file, const std::string& command, co
     const bool wanted_oedometer = (command == "oedometer" && size == s) || (all && (s == "small" || size == "full"));
     const bool wanted_shear = (command == "shear" && size == s) || (all && (s == "small" || size == "full"));
     const std::string o = "oedometer." + s, h = "shear." + s;
-    c.table(o, c.section(doc, o, wanted_oedometer), oedometer, wanted_oedometer ? std::set<std::string>{"config"}
-                                                                                 : std::set<std::string>{});
+    const toml::table& oedometer_size = c.section(doc, o, wanted_oedometer);
+    c.table(o, oedometer_size, oedometer, wanted_oedometer ? std::set<std::string>{"config"} : std::set<std::string>{});
+    // The oedometer's ensemble judges the mean forces at `travels` and nothing else: without
+    // them its extra runs would judge no row and pass. (An empty list fails above.)
+    const std::int64_t realisations = oedometer_size["ensemble_realisations"].value_or(std::int64_t{1});
+    if (realisations >= 2 && !oedometer_size.contains("travels"))
+      c.fail(o + ".travels", "missing: with ensemble_realisations = " + std::to_string(realisations) +
+                                 " the ensemble compares the mean forces at these travels, and without them it "
+                                 "would judge nothing");
     c.table(h, c.section(doc, h, wanted_shear), shear, wanted_shear ? std::set<std::string>{"config"}
                                                                     : std::set<std::string>{});
   }

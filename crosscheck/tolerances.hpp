@@ -24,7 +24,7 @@ class ToleranceError : public std::runtime_error {
 //                      tolerance (>= 0), at least one
 //   [oedometer.SIZE]   config (required), settle_config (strings); early_rows (integer >= 1);
 //                      early_relative, rms_relative, force_at_relative (>= 0); travels
-//                      (numbers > 0); ensemble keys
+//                      (numbers > 0; required with ensemble_realisations >= 2); ensemble keys
 //   [shear.SIZE]       config (required); loads (numbers > 0); shear_displacement,
 //                      strength_window_end (> 0), strength_window_start (>= 0); early_steps, and the
 //                      relative and absolute tolerances (>= 0); ensemble keys

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -12,8 +13,12 @@ namespace {
 using crosscheck::interpolate;
 using crosscheck::line_weights;
 using crosscheck::max_difference;
+using crosscheck::max_magnitude;
 using crosscheck::mohr_coulomb;
+using crosscheck::relative_difference;
 using crosscheck::rms_difference;
+
+const double kInfinity = std::numeric_limits<double>::infinity();
 
 TEST(CrosscheckCurveMath, InterpolatesLinearlyInsideAndGivesNaNOutside) {
   const std::vector<double> xs = {0.0, 1.0, 3.0}, ys = {0.0, 10.0, 30.0};
@@ -24,6 +29,7 @@ TEST(CrosscheckCurveMath, InterpolatesLinearlyInsideAndGivesNaNOutside) {
   EXPECT_TRUE(std::isnan(interpolate(xs, ys, -0.1)));
   EXPECT_TRUE(std::isnan(interpolate(xs, ys, 3.1)));
   EXPECT_TRUE(std::isnan(interpolate({}, {}, 0.0)));
+  EXPECT_TRUE(std::isnan(interpolate(xs, ys, std::nan(""))));  // not ys[0]: NaN is nowhere inside
 }
 
 // colza c = x + 1 (1, 2, 3, 4 at x = 0..3) against YADE y = x + 2 (2, 3, 4, 5 at the same
@@ -47,6 +53,34 @@ TEST(CrosscheckCurveMath, RmsDifferenceSkipsWhereYadeIsNotDefinedAndIsNaNWithout
   EXPECT_EQ(rms_difference({std::nan(""), 1.0}, {1.0, 1.0}, yx, yy, 0.0, 2.0).n, 1u);  // a NaN abscissa takes no point
 }
 
+// A force that is not finite where both curves are defined is no missing point: it makes the
+// difference +inf (it used to be skipped as "YADE not defined there", or to give NaN).
+TEST(CrosscheckCurveMath, RmsDifferenceIsInfiniteWhenAForceIsNotFinite) {
+  const std::vector<double> x = {0.0, 1.0, 2.0}, c = {1.0, 2.0, 3.0};
+  const double nan = std::nan("");
+  EXPECT_EQ(rms_difference(x, c, x, {1.0, nan, 3.0}, 0.0, 2.0).relative, kInfinity);
+  EXPECT_EQ(rms_difference(x, c, x, {nan, nan, nan}, 0.0, 2.0).relative, kInfinity);
+  EXPECT_EQ(rms_difference(x, {1.0, kInfinity, 3.0}, x, c, 0.0, 2.0).relative, kInfinity);
+  EXPECT_EQ(rms_difference(x, c, x, c, 0.0, 2.0).relative, 0.0);
+}
+
+// std::max(m, NaN) is m: a running maximum by std::max skips NaN. max_magnitude keeps it.
+TEST(CrosscheckCurveMath, MaxMagnitudeKeepsANaNOrInfiniteValue) {
+  EXPECT_EQ(max_magnitude(max_magnitude(0.0, -3.0), 2.0), 3.0);
+  EXPECT_TRUE(std::isnan(max_magnitude(1.0, std::nan(""))));
+  EXPECT_TRUE(std::isnan(max_magnitude(1.0, -kInfinity)));
+  EXPECT_TRUE(std::isnan(max_magnitude(std::nan(""), 5.0)));  // and stays NaN
+}
+
+TEST(CrosscheckCurveMath, RelativeDifferenceOfAZeroOrNonFiniteSignal) {
+  EXPECT_EQ(relative_difference(1.0, 4.0), 0.25);
+  EXPECT_EQ(relative_difference(0.0, 0.0), 0.0);  // two zero signals agree
+  EXPECT_EQ(relative_difference(1e-300, 0.0), kInfinity);
+  EXPECT_EQ(relative_difference(std::nan(""), 1.0), kInfinity);
+  EXPECT_EQ(relative_difference(1.0, std::nan("")), kInfinity);
+  EXPECT_EQ(relative_difference(kInfinity, 1.0), kInfinity);
+}
+
 TEST(CrosscheckCurveMath, MaxDifferenceOverTheFirstRows) {
   const std::vector<double> c = {1.0, -4.0, 2.0, 100.0}, y = {1.5, -4.0, 1.0, 0.0};
   const auto d = max_difference(c, y, 3);  // max |c - y| = 1 (row 2), max |c| = 4, max |y| = 4 (row 1)
@@ -54,7 +88,30 @@ TEST(CrosscheckCurveMath, MaxDifferenceOverTheFirstRows) {
   EXPECT_DOUBLE_EQ(d.max_yade, 4.0);
   EXPECT_DOUBLE_EQ(max_difference({1.0}, {-3.0}, 1).max_yade, 3.0);
   EXPECT_DOUBLE_EQ(d.relative, 0.25);
-  EXPECT_DOUBLE_EQ(max_difference({0.0, 0.0}, {1.0, 1.0}, 2).relative, 0.0);
+}
+
+// colza all zero: YADE all zero agrees (0); YADE not zero is an infinite relative difference,
+// whatever it gives (it used to be 0, so any YADE passed).
+TEST(CrosscheckCurveMath, MaxDifferenceFromAZeroSignal) {
+  EXPECT_EQ(max_difference({0.0, 0.0}, {0.0, 0.0}, 2).relative, 0.0);
+  EXPECT_EQ(max_difference({0.0, 0.0}, {1.0, 1.0}, 2).relative, kInfinity);
+  EXPECT_EQ(max_difference({0.0, 0.0}, {0.0, -1e-300}, 2).relative, kInfinity);
+}
+
+// A value that is not finite, in either code, makes the relative difference +inf and that
+// code's maximum NaN (std::max skipped it: an all-NaN YADE gave 0 and passed).
+TEST(CrosscheckCurveMath, MaxDifferenceWithAValueThatIsNotFinite) {
+  const double nan = std::nan("");
+  const std::vector<double> c = {1.0, 2.0, 3.0};
+  const auto all_nan = max_difference(c, {nan, nan, nan}, 3);
+  EXPECT_EQ(all_nan.relative, kInfinity);
+  EXPECT_TRUE(std::isnan(all_nan.max_yade));
+  EXPECT_DOUBLE_EQ(all_nan.max_colza, 3.0);
+  EXPECT_EQ(max_difference(c, {1.0, nan, 3.0}, 3).relative, kInfinity);
+  const auto colza_inf = max_difference({1.0, kInfinity}, {1.0, 2.0}, 2);
+  EXPECT_EQ(colza_inf.relative, kInfinity);
+  EXPECT_TRUE(std::isnan(colza_inf.max_colza));
+  EXPECT_EQ(max_difference(c, {1.0, 2.0, nan}, 2).relative, 0.0);  // past `rows`: not compared
 }
 
 // Points on tau = 5 kPa + sigma tan(30 deg) give C = 5 kPa and Phi = 30 deg.

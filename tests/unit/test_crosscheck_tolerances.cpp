@@ -62,6 +62,23 @@ TEST(CrosscheckTolerances, MisspeltKeysWrongTypesAndRangesAreNamed) {
   EXPECT_NE(e.find("key 'shear.small.loads': must be a list of numbers > 0"), std::string::npos) << e;
 }
 
+// The oedometer's ensemble judges the mean forces at `travels` only: without them its runs
+// would judge no row (and pass), so the file is refused; a single run needs no travels.
+TEST(CrosscheckTolerances, AnOedometerEnsembleNeedsTravels) {
+  const colza::testing::ScratchDir dir;
+  const std::string text = shipped_text();
+  const std::string travels = "travels = [0.005, 0.006, 0.007]";
+  const std::string no_travels = replaced(text, travels, "");
+  std::string e = error_of(dir, no_travels, "oedometer");
+  EXPECT_NE(e.find("tol.toml: key 'oedometer.small.travels': missing: with ensemble_realisations = 8"),
+            std::string::npos)
+      << e;
+  e = error_of(dir, replaced(text, travels, "travels = []"), "oedometer");
+  EXPECT_NE(e.find("key 'oedometer.small.travels': must be a list of numbers > 0"), std::string::npos) << e;
+  EXPECT_EQ(error_of(dir, replaced(no_travels, "ensemble_realisations = 8", "ensemble_realisations = 1"), "oedometer"),
+            "");
+}
+
 TEST(CrosscheckTolerances, ASectionTheCommandNeedsMustBeThere) {
   const colza::testing::ScratchDir dir;
   const std::string no_full_shear = shipped_text().substr(0, shipped_text().find("[shear.full]"));
