@@ -135,7 +135,13 @@ TEST(CoulombSliding, BelowTheLimitTheSphereRollsWithoutSlip) {
     });
   }
   EXPECT_LT(max_ratio, 1.0);
-  EXPECT_NEAR(max_ratio, 2 * m * kG * std::sin(theta) / (1 + m * Rp * Rp / I) / (mu * fn0), 0.01);
+  // The discrete peak differs from the continuous 2 f by the leapfrog's phase error and by
+  // sampling the peak once a step, both O((omega_t dt)^2) relative, omega_t = sqrt(Ks (1 + m R'^2
+  // / I) / m) = 1.83e4 rad/s the shear spring's frequency against the rolling sphere: 3.3e-4
+  // (measured 2.1e-5).
+  const double expected = 2 * m * kG * std::sin(theta) / (1 + m * Rp * Rp / I) / (mu * fn0);
+  const double omega_t = std::sqrt(kKs * (1 + m * Rp * Rp / I) / m);
+  EXPECT_NEAR(max_ratio, expected, std::pow(omega_t * dt, 2) * expected);
   EXPECT_EQ(st.ledger().slip_dissipated, 0.0);
   // Mean acceleration 5/7 g sin(theta): x_n = 1/2 a (n dt)^2, up to the spring's stretch
   // (|Fs - f| / Ks <= f / Ks = 5.7e-9 m) and the leapfrog start offset a dt^2 n / 2.

@@ -64,9 +64,13 @@ TEST(ShearBoxEdges, ASphereAtTheSideWallsSeamTouchesOneSurface) {
   const OneSphere per_surface = touch(x, BoxEdgeContacts::kPerSurface);
   EXPECT_EQ(per_wall.touching_walls.size(), 2u);
   ASSERT_EQ(per_surface.touching_walls.size(), 1u);
-  // One surface: F = Kn un along +y, exactly; per wall nearly twice that.
+  // One surface: F = Kn un along +y, exactly. Per wall the lower plate's top edge (the line
+  // y = 0, z = shear_plane) adds Kn u_e along its normal: the centre is sqrt((R - un)^2 + h^2)
+  // from the edge (h = 0.1 mm), so u_e = R - that = 8.457 um with n_y = (R - un) / that:
+  // F_y = Kn (un + u_e n_y) = 1.845 Kn un.
   EXPECT_NEAR(per_surface.force.y(), kWallKn * kOverlap, 1e-9);
-  EXPECT_GT(per_wall.force.y(), 1.8 * kWallKn * kOverlap);
+  const double to_edge = std::hypot(kR - kOverlap, 1e-4);
+  EXPECT_NEAR(per_wall.force.y(), kWallKn * (kOverlap + (kR - to_edge) * (kR - kOverlap) / to_edge), 1e-9);
 }
 
 TEST(ShearBoxEdges, ASphereAtARimsConvexCornerTouchesOneEdge) {
