@@ -361,6 +361,10 @@ TEST(CalibrateDensity, BothModesRunTheLoopOnASmallSample) {
                                   (dir / "spec.toml").string() + " --out " + (dir / mode).string());
     ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
     const auto s = read_json(dir / mode / "summary.json");
+    // The target's 1 % uncertainty is 1 % of rho_p too (at a fixed packing fraction the bulk
+    // density is proportional to rho_p); each design run settles its own sample, whose
+    // packing fraction scatters, so rho_p is allowed four times that (a judgement, not a
+    // derived bound), and the validation must meet the target within twice its uncertainty.
     EXPECT_NEAR(s["parameters"][0]["value"].get<double>(), 1260.0, 0.04 * 1260.0) << mode << s.dump(1);
     EXPECT_LE(std::abs(s["targets"][0]["error"].get<double>()), 0.02 * rho_b) << mode;
   }
