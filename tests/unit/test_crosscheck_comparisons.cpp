@@ -145,11 +145,18 @@ toml::table oedometer_tolerances() {
 const nlohmann::json kColzaSummary = {{"particles", 208}, {"stop_reason", "travel"}};
 const nlohmann::json kYadeSummary = {{"particles", 208}, {"stop_reason", "travel"}, {"foreign_patch_contacts", 0}};
 
-TEST(CrosscheckComparisons, OedometerCurvesThatAgreePass) {
+// The oedometer comparison of oedometer_curve() (colza) against `yade`, with these summaries.
+Report compare_oedometer(const Csv& yade, const nlohmann::json& colza_summary = kColzaSummary,
+                         const nlohmann::json& yade_summary = kYadeSummary) {
   const colza::testing::ScratchDir dir;
   Report report;
-  compare_oedometer_curves(report, "oed", oedometer_curve(), oedometer_curve(), oedometer_tolerances(),
-                           kColzaSummary, kYadeSummary, dir / "no-config.toml");
+  compare_oedometer_curves(report, "oed", oedometer_curve(), yade, oedometer_tolerances(), colza_summary,
+                           yade_summary, dir / "no-config.toml");
+  return report;
+}
+
+TEST(CrosscheckComparisons, OedometerCurvesThatAgreePass) {
+  const Report report = compare_oedometer(oedometer_curve());
   EXPECT_TRUE(report.all_passed());
 }
 
@@ -157,45 +164,34 @@ TEST(CrosscheckComparisons, OedometerCurvesThatAgreePass) {
 // patches touched only their own spheres: it fails (it passed as a count of 0; the ensemble
 // already failed it).
 TEST(CrosscheckComparisons, OedometerFailsWithoutYadesPatchCount) {
-  const colza::testing::ScratchDir dir;
   nlohmann::json yade_summary = kYadeSummary;
   yade_summary.erase("foreign_patch_contacts");
-  Report report;
-  compare_oedometer_curves(report, "oed", oedometer_curve(), oedometer_curve(), oedometer_tolerances(),
-                           kColzaSummary, yade_summary, dir / "no-config.toml");
+  const Report report = compare_oedometer(oedometer_curve(), kColzaSummary, yade_summary);
   EXPECT_FALSE(report.all_passed());
   const Row patches = row_of(report, "YADE cylinder patches");
   EXPECT_FALSE(patches.pass);
   EXPECT_NE(patches.difference.find("no foreign_patch_contacts"), std::string::npos) << patches.difference;
 
   yade_summary["foreign_patch_contacts"] = 2;
-  Report touched;
-  compare_oedometer_curves(touched, "oed", oedometer_curve(), oedometer_curve(), oedometer_tolerances(),
-                           kColzaSummary, yade_summary, dir / "no-config.toml");
+  const Report touched = compare_oedometer(oedometer_curve(), kColzaSummary, yade_summary);
   EXPECT_FALSE(row_of(touched, "YADE cylinder patches").pass);
 }
 
 // A summary without its particle count fails the count's row (both missing read as 0 and
 // passed).
 TEST(CrosscheckComparisons, OedometerFailsWithoutAParticleCount) {
-  const colza::testing::ScratchDir dir;
   nlohmann::json colza_summary = kColzaSummary, yade_summary = kYadeSummary;
   colza_summary.erase("particles");
   yade_summary.erase("particles");
-  Report report;
-  compare_oedometer_curves(report, "oed", oedometer_curve(), oedometer_curve(), oedometer_tolerances(),
-                           colza_summary, yade_summary, dir / "no-config.toml");
+  const Report report = compare_oedometer(oedometer_curve(), colza_summary, yade_summary);
   EXPECT_FALSE(row_of(report, "oed particles").pass);
 }
 
 // YADE's forces NaN: the first rows fail and say so (max_difference gave 0 and passed them).
 TEST(CrosscheckComparisons, OedometerFirstRowsOfNaNFail) {
-  const colza::testing::ScratchDir dir;
   Csv yade = oedometer_curve();
   for (double& f : yade.columns[1]) f = kNaN;
-  Report report;
-  compare_oedometer_curves(report, "oed", oedometer_curve(), yade, oedometer_tolerances(), kColzaSummary,
-                           kYadeSummary, dir / "no-config.toml");
+  const Report report = compare_oedometer(yade);
   const Row first = row_of(report, "first 10 rows");
   EXPECT_FALSE(first.pass);
   EXPECT_EQ(first.difference, "a YADE value not finite");
@@ -205,12 +201,9 @@ TEST(CrosscheckComparisons, OedometerFirstRowsOfNaNFail) {
 
 // A curve that stops before a travel fails that travel's row, saying which curve.
 TEST(CrosscheckComparisons, OedometerCurveThatStopsBeforeATravel) {
-  const colza::testing::ScratchDir dir;
   Csv yade = oedometer_curve();
   for (auto& column : yade.columns) column.resize(12);  // up to 5.5 mm
-  Report report;
-  compare_oedometer_curves(report, "oed", oedometer_curve(), yade, oedometer_tolerances(), kColzaSummary,
-                           kYadeSummary, dir / "no-config.toml");
+  const Report report = compare_oedometer(yade);
   EXPECT_TRUE(row_of(report, "force at 5.0 mm").pass);
   const Row at_6 = row_of(report, "force at 6.0 mm");
   EXPECT_FALSE(at_6.pass);
