@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "config/run_config.hpp"
+#include "core/unstable_motion.hpp"
 #include "core/version.hpp"
 #include "contact/slot_registry.hpp"
 #include "io/hdf5_writer.hpp"
@@ -138,6 +139,13 @@ int run_command(const RunOptions& opt) {
     out.commit(opt.force ? earlier_run_outputs(opt.out_dir) : std::vector<std::string>{});
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "colza: error: %s\n", e.what());
+    return 2;
+  } catch (const UnstableMotion& e) {
+    if (!e.fixed_time_step_too_large()) throw;  // main reports it, exit 1
+    const ConfigError blame(config.source, "integration.time_step",
+                            "the fixed time step exceeds the critical estimate and the motion blew up: " +
+                                std::string(e.what()) + "; the unfinished outputs were removed, earlier results are untouched");
+    std::fprintf(stderr, "colza: error: %s\n", blame.what());
     return 2;
   }
   return 0;

@@ -11,7 +11,15 @@ namespace colza {
 
 class UnstableMotion : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  // fixed_time_step_too_large: the time step was fixed by the configuration above the
+  // critical estimate, so the configuration is to blame (`colza run` reports it as an error
+  // of integration.time_step, exit 2).
+  explicit UnstableMotion(const std::string& what, bool fixed_time_step_too_large = false)
+      : std::runtime_error(what), fixed_time_step_too_large_(fixed_time_step_too_large) {}
+  bool fixed_time_step_too_large() const { return fixed_time_step_too_large_; }
+
+ private:
+  bool fixed_time_step_too_large_;
 };
 
 // The first particle with a non-finite (NaN or infinite) position coordinate, if any. One

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <type_traits>
 #include <variant>
 
@@ -13,6 +14,7 @@
 #include "contact/contact_law.hpp"
 #include "core/interrupt.hpp"
 #include "core/unstable_motion.hpp"
+#include "engine/motion_limits.hpp"
 #include "engine/force_outputs.hpp"
 #include "engine/force_partition.hpp"
 #include "engine/pair_batch.hpp"
@@ -37,19 +39,64 @@ void Stepper::prepare(World& world) {
   set_time_step(world, critical_dt_at_prepare_);
 }
 
+namespace {
+
+// What an unstable-motion message says about the time step, and what to change.
+std::string time_step_advice(const World& world, const TimeStepSettings& ts, double critical_dt_at_prepare) {
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "The time step is %.6g s (%s) against a critical estimate of %.6g s at the start of the stage; %s",
+                world.dt, ts.automatic ? "automatic" : "fixed by integration.time_step", critical_dt_at_prepare,
+                ts.automatic ? "lower integration.safety_factor, or check the stiffnesses, densities and radii"
+                             : "lower integration.time_step below the critical estimate");
+  return text;
+}
+
+}  // namespace
+
+bool Stepper::fixed_time_step_too_large(const World& world) const {
+  return !physics_.time_step.automatic && world.dt > critical_dt_at_prepare_;
+}
+
 void Stepper::require_finite_positions(const World& world) const {
   const std::optional<std::size_t> i = first_non_finite_position(world.particles);
   if (!i) return;
-  const TimeStepSettings& ts = physics_.time_step;
-  char text[640];
+  char text[240];
+  std::snprintf(text, sizeof text, "the motion became unstable: particle %zu has a non-finite position at step %llu (t = %.6g s). ",
+                *i, static_cast<unsigned long long>(world.step), world.time);
+  throw UnstableMotion(text + time_step_advice(world, physics_.time_step, critical_dt_at_prepare_),
+                       fixed_time_step_too_large(world));
+}
+
+void Stepper::require_sound_state(const World& world) const {
+  require_finite_positions(world);
+  require_bounded_speeds(world);
+  const DeepestOverlap d = deepest_overlap(world.particles, world.walls, world.contacts, pairs_);
+  if (!(d.ratio > kOverlapLimit)) return;
+  char pair[96], text[400];
+  if (d.with_wall) std::snprintf(pair, sizeof pair, "particle %zu and wall '%s'", d.first, world.walls[d.second].name.c_str());
+  else std::snprintf(pair, sizeof pair, "particles %zu and %zu", d.first, d.second);
   std::snprintf(text, sizeof text,
-                "the motion became unstable: particle %zu has a non-finite position at step %llu (t = %.6g s). The "
-                "time step is %.6g s (%s) against a critical estimate of %.6g s at the start of the stage; %s",
-                *i, static_cast<unsigned long long>(world.step), world.time, world.dt,
-                ts.automatic ? "automatic" : "fixed by integration.time_step", critical_dt_at_prepare_,
-                ts.automatic ? "lower integration.safety_factor, or check the stiffnesses, densities and radii"
-                             : "lower integration.time_step below the critical estimate");
-  throw UnstableMotion(text);
+                "the motion became unstable, or the contacts are far too soft for the load: %s overlap by %.3g m, "
+                "%.0f %% of %s radius, at step %llu (t = %.6g s): spheres passing through each other, which no contact "
+                "model describes. ",
+                pair, d.overlap, 100.0 * d.ratio, d.with_wall ? "the particle's" : "the smaller",
+                static_cast<unsigned long long>(world.step), world.time);
+  throw UnstableMotion(text + time_step_advice(world, physics_.time_step, critical_dt_at_prepare_) +
+                           "; or raise the stiffnesses",
+                       fixed_time_step_too_large(world));
+}
+
+void Stepper::require_bounded_speeds(const World& world) const {
+  const FastestParticle f = fastest_particle(world.particles, world.dt);
+  if (!(f.ratio > kStepLimit)) return;
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "the motion became unstable: particle %zu moves %.3g m/s, %.3g times its radius in one step, at step %llu "
+                "(t = %.6g s), so it could pass through a neighbour between two force evaluations. ",
+                f.index, f.speed, f.ratio, static_cast<unsigned long long>(world.step), world.time);
+  throw UnstableMotion(text + time_step_advice(world, physics_.time_step, critical_dt_at_prepare_),
+                       fixed_time_step_too_large(world));
 }
 
 void Stepper::update_time_step(World& world, CountedContacts counted) {
@@ -353,7 +400,8 @@ void Stepper::begin_step(World& world) {
   // Finite positions: before a rebuild (the cell grid cannot index a non-finite coordinate)
   // and every kFiniteCheckInterval steps (a NaN never asks for a rebuild).
   const bool rebuild = neighbours_.needs_rebuild(world.particles, world.walls);
-  if (rebuild || world.step % kFiniteCheckInterval == 0) require_finite_positions(world);
+  if (world.step % kFiniteCheckInterval == 0) require_sound_state(world);
+  else if (rebuild) require_finite_positions(world);
   if (rebuild) neighbours_.rebuild(world.particles, world.walls, world.contacts, worker_threads());
   compute_forces(world);
 }

@@ -24,11 +24,17 @@ class Stepper {
   // Forces a neighbour rebuild and sets world.dt from the settings (fixed, or the critical
   // estimate counting the pairs that overlap now as contacts: no force pass has marked them
   // yet). The periodic re-evaluation does not repeat it at the same step.
-  // Steps check that positions are finite (every kFiniteCheckInterval steps and before each
-  // neighbour rebuild) and throw UnstableMotion (core/unstable_motion.hpp) naming the
-  // particle, dt and the critical estimate of the last prepare() when they are not.
+  // Steps check the state every kFiniteCheckInterval steps (require_sound_state) and that
+  // positions are finite before each neighbour rebuild, and throw UnstableMotion
+  // (core/unstable_motion.hpp) naming the particle, dt and the critical estimate of the last
+  // prepare() when it is not sound.
   void prepare(World& world);
   static constexpr std::uint64_t kFiniteCheckInterval = 100;
+  // Throws UnstableMotion when a position is not finite or a contact overlaps by more than
+  // kOverlapLimit of a radius (engine/motion_limits.hpp). Steps call it every
+  // kFiniteCheckInterval steps; stages call it when they end, so a motion that blows up
+  // within fewer steps (a stop force reached at once) is caught too.
+  void require_sound_state(const World& world) const;
   void step(World& world) {
     begin_step(world);
     finish_step(world);
@@ -91,7 +97,10 @@ class Stepper {
 
  private:
   void compute_forces(World& world);
+  // A time step fixed by the settings above the critical estimate of the last prepare().
+  bool fixed_time_step_too_large(const World& world) const;
   void require_finite_positions(const World& world) const;
+  void require_bounded_speeds(const World& world) const;
   // world.dt = safety factor x `critical` (automatic), or the fixed dt (`critical` unused).
   void set_time_step(World& world, double critical);
   PhysicsSettings physics_;

@@ -143,6 +143,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
     r.dt_min = std::min(r.dt_min, world.dt);
     r.dt_max = std::max(r.dt_max, world.dt);
   }
+  stepper.require_sound_state(world);  // a blow-up within the last check interval, too
   progress.end_stage();
   load_clock.count_steps(load_steps, world.particles.size());
   r.stages.push_back(load_clock.finish());

@@ -48,6 +48,7 @@ SettleResult settle(World& world, Stepper& stepper, double threshold, double max
   }
   stepper.set_integration_sums(caller_sums);
   stepper.set_between_halves(caller_between);
+  stepper.require_sound_state(world);  // a blow-up within the last check interval, too
   progress.end_stage();
   r.simulated_time = world.time - t0;
   return r;

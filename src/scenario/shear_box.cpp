@@ -217,6 +217,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
     }
     if (world.time - t0 >= b.consolidation_max_time) break;
   }
+  stepper.require_sound_state(world);  // a blow-up within the last check interval, too
   progress.end_stage();
   r.consolidation_time = world.time - t0;
   consolidation_clock.count_steps(steps, world.particles.size());
@@ -263,6 +264,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
     stepper.finish_step(world);
     ++shear_steps;
   }
+  stepper.require_sound_state(world);  // a blow-up within the last check interval, too
   progress.end_stage();
   shear_clock.count_steps(shear_steps, world.particles.size());
   r.stages.push_back(shear_clock.finish());

@@ -132,6 +132,24 @@ TEST_F(SmallOedometer, LoadingFromTheWrittenPackingRepeatsTheRunBitForBit) {
   EXPECT_EQ(s2["fit"], s["fit"]);
 }
 
+TEST_F(SmallOedometer, ATimeStepFarAboveTheCriticalStopsTheRunInsteadOfWritingItsCurve) {
+  // dt = 1 ms, ~100 times the critical estimate: the piston reaches the stop force within a
+  // few steps, before any periodic check, with spheres driven metres into the walls. The
+  // check at the end of the stage stops the run; the time step was fixed above the critical
+  // estimate, so the error names it: exit 2, no result written.
+  const fs::path out = scratch_dir("small-oedometer-unstable");
+  fs::remove_all(out);
+  const CliResult r = run_colza("run oedometer --quiet --config " + kConfig + " --set oedometer.packing_file=" +
+                                (out_ / "packing.txt").string() + " --set integration.time_step=1e-3 --out " +
+                                out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("key 'integration.time_step': the fixed time step exceeds the critical estimate"),
+            std::string::npos)
+      << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("at step 3 "), std::string::npos) << r.stderr_text;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+}
+
 TEST_F(SmallOedometer, BondsAreInstalledBeforeLoadingWhenAsked) {
   const fs::path bonded = scratch_dir("small-oedometer-bonded");
   const CliResult r = run_colza("run oedometer --quiet --config " + kConfig +

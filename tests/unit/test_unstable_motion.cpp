@@ -1,4 +1,6 @@
-// A motion that blows up stops with a clear error (core/unstable_motion.hpp), and spheres
+// A motion that blows up stops with a clear error (core/unstable_motion.hpp: a non-finite
+// position; engine/motion_limits.hpp: a particle moving a radius in a step, an overlap beyond
+// the smaller radius), and spheres
 // far apart do not make the neighbour grid ask for more cells than memory holds.
 #include <gtest/gtest.h>
 
@@ -69,6 +71,61 @@ TEST(UnstableMotion, AnInfinitePositionStopsTheRunBeforeTheNeighbourGridIndexesI
   TwoSpheres s(0.0059, 3);
   s.world.particles.position[0].z() = -std::numeric_limits<double>::infinity();  // asks for a rebuild at once
   EXPECT_THROW(s.stepper.step(s.world), UnstableMotion);
+}
+
+TEST(UnstableMotion, AParticleMovingMoreThanItsRadiusInAStepStopsTheRun) {
+  // 3 mm in one step of 1 us is 3000 m/s: sphere 1 is given 3100 m/s along x (apart from
+  // sphere 0, no contact) and the check at step 0 names it.
+  World w;
+  w.particles.add(Vec3(0.0, 0.0, 0.0), 3e-3, 1250.0);
+  w.particles.add(Vec3(0.0, 0.0, 0.1), 3e-3, 1250.0);
+  w.particles.velocity[1] = Vec3(3100.0, 0.0, 0.0);
+  Stepper stepper(fixed_step_physics(1e-6));
+  stepper.prepare(w);
+  try {
+    stepper.step(w);
+    ADD_FAILURE() << "a particle moving 1.03 radii a step went unnoticed";
+  } catch (const UnstableMotion& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("particle 1 moves 3.1e+03 m/s, 1.03 times its radius in one step, at step 0"), std::string::npos)
+        << m;
+  }
+  // 2900 m/s, 0.97 radii a step, passes.
+  World slower;
+  slower.particles.add(Vec3(0.0, 0.0, 0.0), 3e-3, 1250.0);
+  slower.particles.add(Vec3(0.0, 0.0, 0.1), 3e-3, 1250.0);
+  slower.particles.velocity[1] = Vec3(2900.0, 0.0, 0.0);
+  Stepper slower_stepper(fixed_step_physics(1e-6));
+  slower_stepper.prepare(slower);
+  EXPECT_NO_THROW(slower_stepper.step(slower));
+}
+
+TEST(UnstableMotion, AnOverlapBeyondTheSmallerRadiusStopsTheRun) {
+  // Two fixed spheres of 3 mm whose centres are 2.9 mm apart overlap by 3.1 mm, 1.03 radii
+  // (Fn / Kn with the series rule's Kn = 437e3 / 2): the check at step 100 names the pair. At
+  // 3.1 mm apart (0.97 radii) it passes.
+  for (const double distance : {2.9e-3, 3.1e-3}) {
+    World w;
+    w.particles.add(Vec3(0.0, 0.0, 0.0), 3e-3, 1250.0);
+    w.particles.add(Vec3(0.0, 0.0, distance), 3e-3, 1250.0);
+    w.particles.fixed[0] = w.particles.fixed[1] = 1;
+    Stepper stepper(fixed_step_physics(1e-6));
+    stepper.prepare(w);
+    stepper.run(w, Stepper::kFiniteCheckInterval);  // steps 0-99; the check of step 100 follows
+    if (distance < 3e-3) {
+      try {
+        stepper.step(w);
+        ADD_FAILURE() << "an overlap of 1.03 radii went unnoticed";
+      } catch (const UnstableMotion& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("particles 0 and 1 overlap by 0.0031 m, 103 % of the smaller radius, at step 100"),
+                  std::string::npos)
+            << m;
+      }
+    } else {
+      EXPECT_NO_THROW(stepper.step(w));
+    }
+  }
 }
 
 TEST(NeighbourGrid, SpheresFarApartNeedNoHugeGrid) {

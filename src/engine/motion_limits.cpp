@@ -1,0 +1,43 @@
+#include "engine/motion_limits.hpp"
+
+#include <algorithm>
+
+namespace colza {
+
+DeepestOverlap deepest_overlap(const ParticleArrays& p, const std::vector<Wall>& walls, const ContactStore& contacts,
+                               const PairTable& pairs) {
+  DeepestOverlap deepest;
+  const auto consider = [&](double normal_force, double kn, double radius, bool with_wall, std::size_t a,
+                            std::size_t b) {
+    if (!(normal_force > 0.0)) return;
+    const double overlap = normal_force / kn, ratio = overlap / radius;
+    if (ratio > deepest.ratio) deepest = {ratio, overlap, with_wall, a, b};
+  };
+  const ParticlePairList& pp = contacts.particle_pairs;
+  for (std::size_t c = 0; c < pp.size(); ++c) {
+    const ContactHistory& h = pp.history[c];
+    if (!h.touching) continue;
+    const Index i = pp.first[c], j = pp.second[c];
+    consider(h.normal_force, pairs.particle_particle(p.material[i], p.material[j]).kn,
+             std::min(p.radius[i], p.radius[j]), false, i, j);
+  }
+  const WallPairList& pw = contacts.wall_pairs;
+  for (std::size_t c = 0; c < pw.size(); ++c) {
+    const ContactHistory& h = pw.history[c];
+    if (!h.touching) continue;
+    const Index i = pw.particle[c], w = pw.wall[c];
+    consider(h.normal_force, pairs.particle_wall(p.material[i], walls[w].material).kn, p.radius[i], true, i, w);
+  }
+  return deepest;
+}
+
+FastestParticle fastest_particle(const ParticleArrays& p, double dt) {
+  FastestParticle fastest;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double speed = p.velocity[i].norm(), ratio = speed * dt / p.radius[i];
+    if (ratio > fastest.ratio) fastest = {ratio, speed, i};
+  }
+  return fastest;
+}
+
+}  // namespace colza
