@@ -180,6 +180,17 @@ TEST(CalibrationScatter, SequentialModeStopsChasingTheScatter) {
   const CalibrationResult blind = calibrate_sequential(p, model, {});
   EXPECT_FALSE(blind.within_uncertainty);  // spends its 12 runs without a lucky draw
   EXPECT_EQ(static_cast<int>(blind.runs.size()), p.max_runs);
+  // Its search narrowed to ~1.6 % of the range and still missed: the advice is to measure
+  // the scatter, not to spend more runs, and the planes through those close runs are flagged.
+  bool advises_replicates = false, advises_more_runs = false, flags_narrow_planes = false;
+  for (const auto& w : blind.warnings) {
+    advises_replicates = advises_replicates || w.find("more runs will not help") != std::string::npos;
+    advises_more_runs = advises_more_runs || w.find("raise sequential.max_runs") != std::string::npos;
+    flags_narrow_planes = flags_narrow_planes || w.find("planes through runs") != std::string::npos;
+  }
+  EXPECT_TRUE(advises_replicates);
+  EXPECT_FALSE(advises_more_runs);
+  EXPECT_TRUE(flags_narrow_planes);
   p.replicates = 3;
   const CalibrationResult aware = calibrate_sequential(p, model, with_replicates(noisy));
   EXPECT_EQ(count_role(aware, "replicate"), 3);
