@@ -142,7 +142,7 @@ int run_command(const RunOptions& opt) {
     return 2;
   } catch (const UnstableMotion& e) {
     if (!e.fixed_time_step_too_large()) throw;  // main reports it, exit 1
-    const ConfigError blame(config.source, "integration.time_step",
+    const ConfigError blame(config.origin_of("integration.time_step"), "integration.time_step",
                             "the fixed time step exceeds the critical estimate and the motion blew up: " +
                                 std::string(e.what()) + "; the unfinished outputs were removed, earlier results are untouched");
     std::fprintf(stderr, "colza: error: %s\n", blame.what());

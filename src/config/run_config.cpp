@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "contact/slot_registry.hpp"
+#include "io/format_number.hpp"
 #include "io/load_label.hpp"
 #include "io/packing_check.hpp"
 #include "io/packing_file.hpp"
@@ -90,7 +91,8 @@ OedometerSpec read_oedometer(const ConfigNode& t, const ParticleSpec& particle) 
   o.fit_force_max = t.positive("fit_force_max", o.fit_force_max);
   if (o.fit_force_min >= o.fit_force_max) t.fail("fit_force_min", "must be below oedometer.fit_force_max");
   if (o.cylinder_diameter <= particle.diameter_max)
-    t.fail("cylinder_diameter", "must exceed particle.diameter_max");
+    t.fail("cylinder_diameter", format_shortest(o.cylinder_diameter) + " m must exceed particle.diameter_max, " +
+                                    format_shortest(particle.diameter_max) + " m (lengths are in metres)");
   if (o.generation_height < o.cylinder_height) t.fail("generation_height", "must be at least oedometer.cylinder_height");
   o.packing_file = t.string("packing_file", "");
   return o;
@@ -129,12 +131,18 @@ ShearBoxSpec read_shear_box(const ConfigNode& t, const ParticleSpec& particle) {
   b.edge_contacts = t.choice("edge_contacts", "per_wall", {"per_wall", "per_surface"}) == "per_wall"
                         ? BoxEdgeContacts::kPerWall
                         : BoxEdgeContacts::kPerSurface;
-  if (b.shear_plane >= b.height) t.fail("shear_plane", "must lie below shear_box.height");
-  if (b.generation_height < b.height) t.fail("generation_height", "must be at least shear_box.height");
+  const auto m = [](double v) { return format_shortest(v) + " m"; };
+  if (b.shear_plane >= b.height)
+    t.fail("shear_plane", m(b.shear_plane) + " must lie below shear_box.height, " + m(b.height));
+  if (b.generation_height < b.height)
+    t.fail("generation_height", m(b.generation_height) + " must be at least shear_box.height, " + m(b.height));
   if (b.strength_window_start >= b.strength_window_end)
-    t.fail("strength_window_start", "must be below shear_box.strength_window_end");
+    t.fail("strength_window_start", m(b.strength_window_start) + " must be below shear_box.strength_window_end, " +
+                                        m(b.strength_window_end));
   if (b.strength_window_end > b.shear_displacement)
-    t.fail("strength_window_end", "must not exceed shear_box.shear_displacement");
+    t.fail("strength_window_end", m(b.strength_window_end) + " must not exceed shear_box.shear_displacement, " +
+                                      m(b.shear_displacement) + " (the window is where the strength is averaged: "
+                                      "shorten it with the shear)");
   if (std::min(b.length, b.width) <= particle.diameter_max) t.fail("length", "the box must be wider than a particle");
   return b;
 }

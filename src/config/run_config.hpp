@@ -114,6 +114,13 @@ struct SceneSpec {                    // [scene]
 struct RunConfig {
   std::string source;                 // file name (or built-in defaults)
   std::vector<std::string> overrides; // --set key=value (and --seed as seed=N), in order
+  // Where a key's value came from, for an error about it found while running: "--set KEY"
+  // when an override set it, else the file (as the config reader's errors name it).
+  std::string origin_of(const std::string& key) const {
+    for (const std::string& o : overrides)
+      if (o.rfind(key + "=", 0) == 0) return "--set " + key;
+    return source;
+  }
   std::string resolved_toml;          // the configuration as used, overrides applied
   std::uint64_t seed = 1;
   ParticleSpec particle;

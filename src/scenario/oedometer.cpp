@@ -37,7 +37,7 @@ void place_sample(World& world, const RunConfig& c) {
   req.max_attempts = static_cast<std::uint64_t>(c.sample.max_placement_attempts);
   const std::vector<PackedSphere> spheres = generate_spheres(req);
   if (spheres.size() < req.count)
-    throw ConfigError(c.source, "sample.count",
+    throw ConfigError(c.origin_of("sample.count"), "sample.count",
                       "only " + std::to_string(spheres.size()) + " of " + std::to_string(req.count) +
                           " spheres fit without overlap in the generation volume; lower sample.count or raise "
                           "oedometer.generation_height");

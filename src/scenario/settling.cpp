@@ -132,12 +132,12 @@ std::size_t install_bonds(World& world, Stepper& stepper, double gap) {
 ConfigError no_sphere_left_error(const RunConfig& c, const Stepper& stepper, const std::string& where) {
   const double critical = stepper.critical_time_step_at_prepare();
   if (!c.integration.automatic_time_step && c.integration.time_step > critical)
-    return ConfigError(c.source, "integration.time_step",
+    return ConfigError(c.origin_of("integration.time_step"), "integration.time_step",
                        "no sphere is left " + where + " after settling: the fixed time step " +
                            format_significant(c.integration.time_step, 6) + " s exceeds the critical estimate " +
                            format_significant(critical, 6) +
                            " s, so the motion blew up and the spheres flew off; use \"auto\" or a smaller step");
-  return ConfigError(c.source, "sample.count", "no sphere is left " + where + " after settling");
+  return ConfigError(c.origin_of("sample.count"), "sample.count", "no sphere is left " + where + " after settling");
 }
 
 }  // namespace colza

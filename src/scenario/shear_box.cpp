@@ -116,7 +116,7 @@ ShearSample prepare_shear_sample(const RunConfig& c, Progress& progress) {
   StageClock clock("settling");
   for (const PackedSphere& p : generate_spheres(req)) world.particles.add(p.position, p.radius, c.particle.density);
   if (world.particles.size() < req.count)
-    throw ConfigError(c.source, "sample.count",
+    throw ConfigError(c.origin_of("sample.count"), "sample.count",
                       "only " + std::to_string(world.particles.size()) + " of " + std::to_string(req.count) +
                           " spheres fit without overlap in the generation volume; lower sample.count or raise "
                           "shear_box.generation_height");

@@ -73,9 +73,24 @@ TEST(CliErrors, AFixedTimeStepThatBlowsTheSampleApartNamesTheTimeStep) {
   const CliResult r = run_colza("run oedometer --quiet --config " + kConfig +
                                 " --set integration.time_step=1e-3 --out " + out.string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.stderr_text.find("key 'integration.time_step'"), std::string::npos) << r.stderr_text;
+  // The value came from --set, so the error names it there rather than the file.
+  EXPECT_NE(r.stderr_text.find("--set integration.time_step: key 'integration.time_step'"), std::string::npos)
+      << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("exceeds the critical estimate"), std::string::npos) << r.stderr_text;
   EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(CliErrors, ACheckAcrossTwoKeysGivesBothValues) {
+  // A shorter shear with the file's strength window: the message gives both lengths.
+  const fs::path out = scratch_dir("window-past-the-shear");
+  const CliResult r = run_colza("run shear --quiet --normal-stress 25750 --config " +
+                                source_path("tests/data/small_shear.toml") +
+                                " --set shear_box.shear_displacement=0.002 --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("key 'shear_box.strength_window_end': 0.003 m must not exceed "
+                               "shear_box.shear_displacement, 0.002 m"),
+            std::string::npos)
+      << r.stderr_text;
 }
 
 TEST(CliErrors, ExistingResultIsKeptWithoutForceAndAfterAFailedRun) {
