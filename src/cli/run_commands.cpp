@@ -10,6 +10,7 @@
 #include "core/unstable_motion.hpp"
 #include "core/version.hpp"
 #include "contact/slot_registry.hpp"
+#include "io/format_number.hpp"
 #include "io/hdf5_writer.hpp"
 #include "io/output_dir.hpp"
 #include "io/packing_file.hpp"
@@ -20,6 +21,22 @@
 namespace colza {
 
 namespace {
+
+// What a user must not miss in an oedometer result: printed as WARNING lines and kept in
+// summary.json's "warnings".
+std::vector<std::string> oedometer_warnings(const RunConfig& c, const OedometerResult& r) {
+  std::vector<std::string> w;
+  if (!r.settling.converged)
+    w.push_back("settling did not converge within sample.settle_max_time = " +
+                format_shortest(c.sample.settle_max_time) + " s (mean unbalanced force " +
+                format_significant(r.settling.mean_unbalanced_force, 3) + " N against " +
+                format_shortest(c.sample.settle_unbalanced_force) +
+                " N): the sample was not at rest when loading began; raise sample.settle_max_time");
+  if (!r.fit.reached_force_max)
+    w.push_back("the force never reached fit_force_max = " + format_shortest(c.oedometer.fit_force_max) +
+                " N; the fit covers a shorter range");
+  return w;
+}
 
 void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging& out) {
   Progress progress(!opt.quiet);
@@ -51,6 +68,8 @@ void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputSta
     fit["r2"] = r.fit.fit.r2;
   }
   s["fit"] = fit;
+  const std::vector<std::string> warnings = oedometer_warnings(c, r);
+  s["warnings"] = warnings;
   s["max_force"] = r.max_force;
   s["stop_reason"] = r.stop_reason;
   s["dt"] = r.dt_min;
@@ -78,9 +97,7 @@ void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputSta
                 r.fit.fit.coefficients[1], r.fit.fit.coefficients[2], r.fit.fit.r2);
   else
     std::printf(" not enough points above %.0f N\n", c.oedometer.fit_force_min);
-  if (!r.fit.reached_force_max)
-    std::printf("  WARNING: the force never reached fit_force_max = %.0f N; the fit covers a shorter range\n",
-                c.oedometer.fit_force_max);
+  for (const std::string& warning : warnings) std::printf("  WARNING: %s\n", warning.c_str());
   std::printf("  %llu steps, dt %.3g..%.3g s, %.1f s wall, %.3g particle-steps/s\n",
               static_cast<unsigned long long>(r.steps), r.dt_min, r.dt_max, total_wall_seconds(r.stages),
               overall_rate(r.stages));

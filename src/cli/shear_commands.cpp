@@ -15,6 +15,7 @@
 #include "core/concurrent.hpp"
 #include "core/version.hpp"
 #include "io/fingerprint.hpp"
+#include "io/format_number.hpp"
 #include "io/hdf5_writer.hpp"
 #include "io/load_label.hpp"
 #include "io/output_dir.hpp"
@@ -44,6 +45,30 @@ std::string config_fingerprint(const RunConfig& c) {
   return fingerprint_text(text.str());
 }
 
+// What a user must not miss in a shear load's result: printed as WARNING lines and kept in
+// summary.json's "warnings". A mean stress error past this during shearing means the servo
+// did not hold the load (the paper's speed gives ~0.2 %, ten times it ~2 %: README).
+constexpr double kHeldStressError = 0.10;
+
+std::vector<std::string> load_warnings(const RunConfig& c, const ShearSample& sample, const ShearLoadResult& r) {
+  std::vector<std::string> w;
+  if (!sample.settling.converged && c.shear_box.packing_file.empty())
+    w.push_back("the sample's settling did not converge within sample.settle_max_time = " +
+                format_shortest(c.sample.settle_max_time) + " s: it was not at rest when the load was applied");
+  if (!r.consolidated)
+    w.push_back("the plate did not hold the normal stress within shear_box.consolidation_tolerance before "
+                "shear_box.consolidation_max_time = " + format_shortest(c.shear_box.consolidation_max_time) +
+                " s; shearing began anyway");
+  if (r.mean_normal_stress_error > kHeldStressError)
+    w.push_back("during shearing the normal stress was " + format_significant(r.mean_normal_stress, 4) +
+                " Pa on average against " + format_shortest(r.normal_stress_target) + " Pa (mean error " +
+                format_significant(100.0 * r.mean_normal_stress_error, 3) + " %): the servo did not hold it" +
+                (r.normal_stress_target < 1000.0 ? " (normal stresses are in Pa)" : ""));
+  if (r.particles_outside > 0)
+    w.push_back(std::to_string(r.particles_outside) + " particles ended outside the box");
+  return w;
+}
+
 nlohmann::json load_summary(const RunConfig& c, const ShearSample& sample, const ShearLoadResult& r, int threads) {
   nlohmann::json s = common_summary(c, "shear", threads);
   s["edge_contacts"] = to_string(c.shear_box.edge_contacts);
@@ -59,6 +84,7 @@ nlohmann::json load_summary(const RunConfig& c, const ShearSample& sample, const
   s["consolidated"] = r.consolidated;
   s["consolidation_time"] = r.consolidation_time;
   s["particles_outside"] = r.particles_outside;
+  s["warnings"] = load_warnings(c, sample, r);
   s["bond_install"] = to_string(c.contact.bond_install);
   s["bonds_installed"] = r.bonds_installed;
   s["bonds_broken_tension"] = r.bonds_broken_tension;
@@ -75,13 +101,14 @@ void write_load(OutputStaging& out, const RunConfig& c, const ShearLoadResult& r
   write_json(out.path("summary.json"), s);
 }
 
-void print_load(const ShearLoadResult& r) {
+void print_load(const ShearLoadResult& r, const nlohmann::json& summary) {
   std::printf("  sigma %.2f kPa: shear strength %.3f kPa (peak %.3f), normal stress held %.2f kPa (mean error %.2f %%)%s, "
               "%zu outside, %.1f s wall\n",
               r.normal_stress_target * 1e-3, r.shear_strength * 1e-3, r.peak_shear_stress * 1e-3,
               r.mean_normal_stress * 1e-3, 100.0 * r.mean_normal_stress_error,
               r.consolidated ? "" : ", NOT consolidated within the time limit", r.particles_outside,
               total_wall_seconds(r.stages));
+  for (const auto& warning : summary["warnings"]) std::printf("    WARNING: %s\n", warning.get<std::string>().c_str());
 }
 
 }  // namespace
@@ -100,7 +127,7 @@ void run_shear_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging
     std::printf("shear: %zu particles (%zu generated)\n", r.particles, sample.generated);
   else
     std::printf("shear: %zu particles (read from %s)\n", r.particles, c.shear_box.packing_file.c_str());
-  print_load(r);
+  print_load(r, s);
 }
 
 namespace {
@@ -254,7 +281,7 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
     strength[k] = r.shear_strength;
     load_json[k] = s;
     load_json[k]["reused"] = false;
-    print_load(r);
+    print_load(r, s);
     std::fflush(stdout);
   });
 

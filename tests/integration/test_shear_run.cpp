@@ -69,6 +69,24 @@ TEST_F(SmallShearSeries, ServoHoldsTheNormalStressAndNoParticleLeaves) {
   }
 }
 
+TEST_F(SmallShearSeries, ALoadTheServoCannotHoldIsAWarning) {
+  // 25.75 Pa (kPa meant): the plate rests on a dilating sample and the stress during shearing
+  // is several hundred Pa. The run finishes, and says so (a WARNING line and the summary).
+  const fs::path out = scratch_dir("small-shear-unheld");
+  const CliResult r = run_colza("run shear --quiet --normal-stress 25.75 --config " + kConfig +
+                                " --set shear_box.packing_file=" + (out_ / "packing.txt").string() +
+                                " --set shear_box.shear_displacement=0.002 --set shear_box.strength_window_end=0.002"
+                                " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const auto warnings = read_json(out / "summary.json")["warnings"];
+  ASSERT_EQ(warnings.size(), 1u) << warnings.dump();
+  const std::string w = warnings[0].get<std::string>();
+  EXPECT_NE(w.find("during shearing the normal stress was"), std::string::npos) << w;
+  EXPECT_NE(w.find("(normal stresses are in Pa)"), std::string::npos) << w;
+  // The series' loads, held, have none.
+  EXPECT_TRUE(read_json(out_ / "load-78750Pa" / "summary.json")["warnings"].empty());
+}
+
 TEST_F(SmallShearSeries, ShearForceIsPositiveAndStartsNearZero) {
   std::vector<std::string> header;
   const auto rows = read_rows(out_ / "load-78750Pa" / "curve.csv", header);
