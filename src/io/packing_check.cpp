@@ -38,6 +38,24 @@ void check_each(const std::vector<PackedSphere>& spheres, const std::string& fil
   }
 }
 
+// A settled packing rests against its container's walls: its outermost sphere surfaces lie
+// within a largest diameter of each. One that stops short (`reach`, m, of `extent`) was made
+// in a narrower container and would load as a loose heap.
+void check_fills(double reach, double extent, double largest_diameter, const std::string& file,
+                 const std::string& key, const std::string& what) {
+  if (reach >= extent - largest_diameter) return;
+  throw ConfigError(file, key,
+                    "the spheres reach only " + format_significant(reach * 1e3, 4) + " mm of the " +
+                        format_significant(extent * 1e3, 4) + " mm " + what +
+                        ": the packing does not fill this container (a packing made in a narrower one?)");
+}
+
+double largest_diameter(const std::vector<PackedSphere>& spheres) {
+  double d = 0.0;
+  for (const PackedSphere& s : spheres) d = std::max(d, 2.0 * s.radius);
+  return d;
+}
+
 }  // namespace
 
 void check_packing_in_cylinder(const std::vector<PackedSphere>& spheres, double radius, const std::string& file,
@@ -49,6 +67,9 @@ void check_packing_in_cylinder(const std::vector<PackedSphere>& spheres, double 
                const double floor = s.radius - s.position[2];
                return wall >= floor ? Excess{wall, "the wall"} : Excess{floor, "the floor"};
              });
+  double reach = 0.0;  // from the axis
+  for (const PackedSphere& s : spheres) reach = std::max(reach, std::hypot(s.position[0], s.position[1]) + s.radius);
+  if (!spheres.empty()) check_fills(reach, radius, largest_diameter(spheres), file, key, "radius from the axis");
 }
 
 void check_packing_in_box(const std::vector<PackedSphere>& spheres, double length, double width,
@@ -65,6 +86,17 @@ void check_packing_in_box(const std::vector<PackedSphere>& spheres, double lengt
                return *std::max_element(std::begin(candidates), std::end(candidates),
                                         [](const Excess& a, const Excess& c) { return a.by < c.by; });
              });
+  if (spheres.empty()) return;
+  const double extent[2] = {length, width};
+  const char* axis[2] = {"length (x)", "width (y)"};
+  for (int d = 0; d < 2; ++d) {
+    double lo = extent[d], hi = 0.0;
+    for (const PackedSphere& s : spheres) {
+      lo = std::min(lo, s.position[d] - s.radius);
+      hi = std::max(hi, s.position[d] + s.radius);
+    }
+    check_fills(hi - lo, extent[d], 2.0 * largest_diameter(spheres), file, key, axis[d]);
+  }
 }
 
 void check_packing_overlaps(const std::vector<PackedSphere>& spheres, const std::string& file,

@@ -17,12 +17,14 @@ namespace colza {
 inline constexpr double kMaxSettledOverlapFraction = 0.1;
 
 // Spheres must lie in the vertical cylinder of radius `radius` around the z axis, above the
-// floor z = 0 (the oedometer, scenario/oedometer.cpp).
+// floor z = 0, and reach within a largest diameter of its wall (the oedometer,
+// scenario/oedometer.cpp).
 void check_packing_in_cylinder(const std::vector<PackedSphere>& spheres, double radius, const std::string& file,
                                const std::string& key);
 
-// Spheres must lie in 0 <= x <= length, 0 <= y <= width, above the floor z = 0 (the shear
-// box, scenario/shear_box.cpp).
+// Spheres must lie in 0 <= x <= length, 0 <= y <= width, above the floor z = 0, and span
+// each of the box's length and width to within two largest diameters (the shear box,
+// scenario/shear_box.cpp).
 void check_packing_in_box(const std::vector<PackedSphere>& spheres, double length, double width,
                           const std::string& file, const std::string& key);
 

@@ -74,6 +74,23 @@ TEST(PackingCheck, BoxNamesTheWallASphereCrosses) {
   }
 }
 
+TEST(PackingCheck, APackingThatDoesNotFillItsContainerIsRefused) {
+  // A settled packing rests against the walls. One from a 40 mm cylinder in the 100 mm one
+  // (a user's mistake: it loaded as a heap at 89 kg/m^3) reaches 20 mm of 50: refused. One
+  // reaching within a diameter of the wall passes.
+  const double R = 0.05, r = 0.003;
+  std::vector<PackedSphere> narrow = {sphere(0.02 - r, 0.0, r, r, 2), sphere(0.0, 0.0, 3 * r, r, 3)};
+  std::string m = reason_of([&] { check_packing_in_cylinder(narrow, R, kFile, kKey); });
+  EXPECT_NE(m.find("reach only 20 mm of the 50 mm radius"), std::string::npos) << m;
+  std::vector<PackedSphere> near_wall = {sphere(R - 3 * r + 1e-4, 0.0, r, r, 2)};
+  EXPECT_EQ(reason_of([&] { check_packing_in_cylinder(near_wall, R, kFile, kKey); }), "");
+  // The box: spanning its length, but only 50 of its 100 mm width.
+  const double L = 0.2, W = 0.1;
+  const std::vector<PackedSphere> half_wide = {sphere(r, r, r, r, 2), sphere(L - r, 0.05 - r, r, r, 3)};
+  m = reason_of([&] { check_packing_in_box(half_wide, L, W, kFile, kKey); });
+  EXPECT_NE(m.find("reach only 50 mm of the 100 mm width (y)"), std::string::npos) << m;
+}
+
 TEST(PackingCheck, OverlapsAboveATenthOfTheSmallerRadiusAreNamed) {
   const double r = 0.003, small = 0.002;
   // Pairs overlapping by 9 % of the smaller radius, in one cell and across cells.
