@@ -701,7 +701,10 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
   propagate_uncertainty(p, r.surfaces, r);
   determination_warnings(p, r);
   const auto [span, narrow] = narrowest_surface_span(p, r);
-  if (span < kNarrowSpan && p.replicates == 0) {
+  // Only a model whose realisations scatter (one with other seeds to run) can mislead so, and
+  // only then can [scatter] replicates help.
+  const bool can_replicate = static_cast<bool>(opt.replicate_model);
+  if (span < kNarrowSpan && p.replicates == 0 && can_replicate) {
     const Parameter& q = p.parameters[narrow];
     r.warnings.push_back("the uncertainty comes from planes through runs " + fmt(100.0 * span) + " % of " + q.name +
                          "'s design range apart: where runs at nearby points scatter (each DEM run settles its own "
@@ -739,7 +742,7 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
     }
     // A search that had narrowed to a few per cent of the range and still missed is chasing
     // the runs' scatter: more runs would not help.
-    const bool narrowed = radius < kNarrowSpan;
+    const bool narrowed = radius < kNarrowSpan && can_replicate;
     r.warnings.push_back("stopped after " + std::to_string(pool.size()) + " runs (sequential.max_runs = " +
                          std::to_string(p.max_runs) + ") with the best run " +
                          fmt(normalised_misfit(p, r.achieved, tolerance)) + misfit_unit(r) + " from the measurement: " +

@@ -335,7 +335,8 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
       for (std::size_t j = 0; j < spec_.problem.parameters.size(); ++j)
         point += (j ? ", " : "") + spec_.problem.parameters[j].name + " = " + num17(x[j]);
       return UnstableMotion("run " + fp + " (" + point + (replicate ? ", replicate " + std::to_string(replicate) : "") +
-                            "): " + e.what());
+                            "): " + e.what(),
+                            e.fixed_time_step_too_large());
     };
     if (spec_.stage == Stage::kShear) {
       // Each load's whole curve is kept (load-<sigma>Pa.csv), so that other strength

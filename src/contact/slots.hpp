@@ -64,7 +64,7 @@ using TangentialSlot = std::variant<CoulombTangential>;
 // When bonds are put on particle-particle contacts (physics.md section 2).
 enum class BondInstallMoment {
   kNever,
-  kAfterSettling,   // on the contacts present right after settling (before discarding)
+  kAfterSettling,   // on the contacts of the settled sample at rest, after discarding (oedometer, shear box)
   kBeforeLoading,   // on the contacts present when loading starts (oedometer piston / shearing)
   kOnNewContacts,   // every particle-particle contact is bonded the step it forms
 };

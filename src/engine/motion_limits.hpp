@@ -42,7 +42,12 @@ struct FastestParticle {
   std::size_t index = 0;
 };
 
-// The particle that moves farthest in one step of dt (s) relative to its radius.
-FastestParticle fastest_particle(const ParticleArrays& particles, double dt);
+// The particle that moves farthest in one step of dt (s) relative to its radius. A particle
+// without a neighbour candidate (no particle or wall within the skin) counts only when it is
+// faster than `free_flight_speed` (m/s): one that left the container and falls alone, faster
+// and faster, has nothing to pass through, while the spheres of a sample blown apart are
+// alone too but far faster than gravity could have made them.
+FastestParticle fastest_particle(const ParticleArrays& particles, const ContactStore& contacts, double dt,
+                                 double free_flight_speed);
 
 }  // namespace colza

@@ -36,6 +36,7 @@ void Stepper::prepare(World& world) {
   // Evaluated whatever the dt setting: a fixed dt is judged against it if the motion blows up.
   critical_dt_at_prepare_ = critical_time_step(world.particles, world.walls, world.contacts, pairs_,
                                                CountedContacts::kTouchingOrOverlapping);
+  prepared_at_time_ = world.time;
   set_time_step(world, critical_dt_at_prepare_);
 }
 
@@ -88,7 +89,10 @@ void Stepper::require_sound_state(const World& world) const {
 }
 
 void Stepper::require_bounded_speeds(const World& world) const {
-  const FastestParticle f = fastest_particle(world.particles, world.dt);
+  // A free fall since the stage began gives at most |g| t (damping only slows it), plus
+  // 10 m/s for a particle thrown in a scene or by a wall.
+  const double free_flight_speed = physics_.integrator.gravity.norm() * (world.time - prepared_at_time_) + 10.0;
+  const FastestParticle f = fastest_particle(world.particles, world.contacts, world.dt, free_flight_speed);
   if (!(f.ratio > kStepLimit)) return;
   char text[320];
   std::snprintf(text, sizeof text,

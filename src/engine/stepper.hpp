@@ -111,6 +111,7 @@ class Stepper {
   BetweenHalves between_halves_ = BetweenHalves::kParticles;
   std::optional<std::uint64_t> time_step_set_at_;  // world.step at which dt was last set
   double critical_dt_at_prepare_ = 0.0;  // s, the critical estimate (no safety factor) at prepare()
+  double prepared_at_time_ = 0.0;  // world.time at the last prepare() (s)
   bool integrated_with_forces_ = false;  // this step's motion was done by the threaded force loop
   EnergyLedger ledger_;
   ContactEvents events_;

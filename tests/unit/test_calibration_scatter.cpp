@@ -177,7 +177,8 @@ TEST(CalibrationScatter, SequentialModeStopsChasingTheScatter) {
   Problem p = compression_problem(0.005);
   p.max_runs = 12;
   const ForwardModel model = [](const Eigen::VectorXd& x) { return noisy(x, 0); };
-  const CalibrationResult blind = calibrate_sequential(p, model, {});
+  // Realisations available (seeds), none asked for: the search does not measure the scatter.
+  const CalibrationResult blind = calibrate_sequential(p, model, with_replicates(noisy));
   EXPECT_FALSE(blind.within_uncertainty);  // spends its 12 runs without a lucky draw
   EXPECT_EQ(static_cast<int>(blind.runs.size()), p.max_runs);
   // Its search narrowed to ~1.6 % of the range and still missed: the advice is to measure
