@@ -1,6 +1,7 @@
 // The three comparisons of crosscheck (README.md, "What is compared"), each adding its rows
 // to the report: the micro scenes, the oedometer and the shear box.
 #pragma once
+#include <cmath>
 #include <limits>
 #include <map>
 #include <string>
@@ -16,6 +17,13 @@ namespace crosscheck {
 // A key missing from a summary reads as this NaN, so the row comparing it fails
 // (Report::check) instead of passing on a default that happens to agree.
 inline constexpr double kMissingValue = std::numeric_limits<double>::quiet_NaN();
+
+// A row that both codes' summaries give the same count under `key` (particles, say).
+inline void check_same_count(Report& report, const std::string& metric, const nlohmann::json& cs,
+                             const nlohmann::json& ys, const std::string& key) {
+  const double c = cs.value(key, kMissingValue), y = ys.value(key, kMissingValue);
+  report.check(metric, c, y, std::abs(c - y), 0.0, "%.0f");
+}
 
 // What every check uses: the options, the tolerance table, the runs of both codes, and the
 // speed tally the loadings add to.

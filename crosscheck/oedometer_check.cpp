@@ -49,8 +49,7 @@ void compare_oedometer_curves(Report& report, const std::string& label, const Cs
   const auto& ysd = y.at("piston_displacement");
   const auto& yf = y.at("piston_force");
   // The same start: identical particle count and contact count at step 0.
-  report.check(label + " particles", cs.value("particles", kMissingValue), ys.value("particles", kMissingValue),
-               std::abs(cs.value("particles", kMissingValue) - ys.value("particles", kMissingValue)), 0.0, "%.0f");
+  check_same_count(report, label + " particles", cs, ys, "particles");
   report.check(label + " contacts at the start", c.at("contacts")[0], y.at("contacts")[0],
                std::abs(c.at("contacts")[0] - y.at("contacts")[0]), 0.0, "%.0f");
   // Early rows: before chaos amplifies rounding, the curves must coincide.

@@ -156,8 +156,7 @@ std::optional<std::pair<double, double>> compare_load(const CheckContext& ctx, c
   try {
     const auto cs = read_json(c_out / "summary.json"), ys = read_json(y_out / "summary.json");
     const Csv c = read_csv(c_out / "curve.csv"), y = read_csv(y_out / "curve.csv");
-    report.check(l + " particles", cs.value("particles", kMissingValue), ys.value("particles", kMissingValue),
-                 std::abs(cs.value("particles", kMissingValue) - ys.value("particles", kMissingValue)), 0.0, "%.0f");
+    check_same_count(report, l + " particles", cs, ys, "particles");
     const bool both = cs.value("consolidated", false) && ys.value("consolidated", false);
     report.add(Row{l + " consolidated", cs.value("consolidated", false) ? "yes" : "no",
                    ys.value("consolidated", false) ? "yes" : "no", "-", "both", both, false});

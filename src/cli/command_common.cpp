@@ -2,6 +2,7 @@
 
 #include "contact/slot_registry.hpp"
 #include "core/version.hpp"
+#include "io/format_number.hpp"
 #include "io/hdf5_writer.hpp"
 #include "io/summary.hpp"
 
@@ -70,6 +71,13 @@ void write_result_h5(const std::string& file, const std::string& scenario, const
   h5.write_table(table_group, table);
   for (const NamedState& st : states) h5.write_particles(st.group, *st.particles);
   h5.close();
+}
+
+std::string settling_warning(const RunConfig& c, const SettleResult& settling) {
+  return "settling did not converge within sample.settle_max_time = " + format_shortest(c.sample.settle_max_time) +
+         " s (mean unbalanced force " + format_significant(settling.mean_unbalanced_force, 3) + " N against " +
+         format_shortest(c.sample.settle_unbalanced_force) +
+         " N): the sample was not at rest when its test began; raise sample.settle_max_time";
 }
 
 }  // namespace colza

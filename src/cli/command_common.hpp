@@ -7,6 +7,7 @@
 #include "config/run_config.hpp"
 #include "core/stage_timing.hpp"
 #include "io/table.hpp"
+#include "scenario/settling.hpp"
 
 namespace colza {
 
@@ -27,6 +28,10 @@ struct NamedState {
 void write_result_h5(const std::string& file, const std::string& scenario, const RunConfig& c,
                      const nlohmann::json& summary, const std::string& table_group, const Table& table,
                      std::initializer_list<NamedState> states);
+
+// The warning a run's summary carries when its sample's settling did not converge (the
+// oedometer's and the shear box's "warnings"), naming the key to raise.
+std::string settling_warning(const RunConfig& c, const SettleResult& settling);
 
 void run_shear_scenario(const RunConfig& config, const RunOptions& options, class OutputStaging& out);
 // The series manages its own output directory (it resumes finished loads). Returns the exit code.

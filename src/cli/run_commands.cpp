@@ -26,12 +26,7 @@ namespace {
 // summary.json's "warnings".
 std::vector<std::string> oedometer_warnings(const RunConfig& c, const OedometerResult& r) {
   std::vector<std::string> w;
-  if (!r.settling.converged)
-    w.push_back("settling did not converge within sample.settle_max_time = " +
-                format_shortest(c.sample.settle_max_time) + " s (mean unbalanced force " +
-                format_significant(r.settling.mean_unbalanced_force, 3) + " N against " +
-                format_shortest(c.sample.settle_unbalanced_force) +
-                " N): the sample was not at rest when loading began; raise sample.settle_max_time");
+  if (!r.settling.converged) w.push_back(settling_warning(c, r.settling));
   if (!r.fit.reached_force_max)
     w.push_back("the force never reached fit_force_max = " + format_shortest(c.oedometer.fit_force_max) +
                 " N; the fit covers a shorter range");

@@ -52,9 +52,7 @@ constexpr double kHeldStressError = 0.10;
 
 std::vector<std::string> load_warnings(const RunConfig& c, const ShearSample& sample, const ShearLoadResult& r) {
   std::vector<std::string> w;
-  if (!sample.settling.converged && c.shear_box.packing_file.empty())
-    w.push_back("the sample's settling did not converge within sample.settle_max_time = " +
-                format_shortest(c.sample.settle_max_time) + " s: it was not at rest when the load was applied");
+  if (!sample.settling.converged) w.push_back(settling_warning(c, sample.settling));  // a packing file's is converged
   if (!r.consolidated)
     w.push_back("the plate did not hold the normal stress within shear_box.consolidation_tolerance before "
                 "shear_box.consolidation_max_time = " + format_shortest(c.shear_box.consolidation_max_time) +

@@ -55,10 +55,6 @@ std::string time_step_advice(const World& world, const TimeStepSettings& ts, dou
 
 }  // namespace
 
-bool Stepper::fixed_time_step_too_large(const World& world) const {
-  return !physics_.time_step.automatic && world.dt > critical_dt_at_prepare_;
-}
-
 void Stepper::require_finite_positions(const World& world) const {
   const std::optional<std::size_t> i = first_non_finite_position(world.particles);
   if (!i) return;
@@ -66,7 +62,7 @@ void Stepper::require_finite_positions(const World& world) const {
   std::snprintf(text, sizeof text, "the motion became unstable: particle %zu has a non-finite position at step %llu (t = %.6g s). ",
                 *i, static_cast<unsigned long long>(world.step), world.time);
   throw UnstableMotion(text + time_step_advice(world, physics_.time_step, critical_dt_at_prepare_),
-                       fixed_time_step_too_large(world));
+                       fixed_time_step_too_large());
 }
 
 void Stepper::require_sound_state(const World& world) const {
@@ -85,7 +81,7 @@ void Stepper::require_sound_state(const World& world) const {
                 static_cast<unsigned long long>(world.step), world.time);
   throw UnstableMotion(text + time_step_advice(world, physics_.time_step, critical_dt_at_prepare_) +
                            "; or raise the stiffnesses",
-                       fixed_time_step_too_large(world));
+                       fixed_time_step_too_large());
 }
 
 void Stepper::require_bounded_speeds(const World& world) const {
@@ -100,7 +96,7 @@ void Stepper::require_bounded_speeds(const World& world) const {
                 "(t = %.6g s), so it could pass through a neighbour between two force evaluations. ",
                 f.index, f.speed, f.ratio, static_cast<unsigned long long>(world.step), world.time);
   throw UnstableMotion(text + time_step_advice(world, physics_.time_step, critical_dt_at_prepare_),
-                       fixed_time_step_too_large(world));
+                       fixed_time_step_too_large());
 }
 
 void Stepper::update_time_step(World& world, CountedContacts counted) {

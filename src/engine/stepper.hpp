@@ -30,8 +30,9 @@ class Stepper {
   // prepare() when it is not sound.
   void prepare(World& world);
   static constexpr std::uint64_t kFiniteCheckInterval = 100;
-  // Throws UnstableMotion when a position is not finite or a contact overlaps by more than
-  // kOverlapLimit of a radius (engine/motion_limits.hpp). Steps call it every
+  // Throws UnstableMotion when a position is not finite, a particle moves more than
+  // kStepLimit of its radius in a step or a contact overlaps by more than kOverlapLimit of a
+  // radius (engine/motion_limits.hpp). Steps call it every
   // kFiniteCheckInterval steps; stages call it when they end, so a motion that blows up
   // within fewer steps (a stop force reached at once) is caught too.
   void require_sound_state(const World& world) const;
@@ -67,6 +68,11 @@ class Stepper {
 
   // The critical time step estimate (no safety factor, s) when prepare() was last called.
   double critical_time_step_at_prepare() const { return critical_dt_at_prepare_; }
+  // A time step fixed by the settings above that estimate: a blow-up is then the
+  // configuration's doing (integration.time_step).
+  bool fixed_time_step_too_large() const {
+    return !physics_.time_step.automatic && physics_.time_step.fixed_dt > critical_dt_at_prepare_;
+  }
   const PhysicsSettings& physics() const { return physics_; }
   const PairTable& pairs() const { return pairs_; }
   const IntegrationReport& last_integration() const { return last_integration_; }
@@ -97,8 +103,6 @@ class Stepper {
 
  private:
   void compute_forces(World& world);
-  // A time step fixed by the settings above the critical estimate of the last prepare().
-  bool fixed_time_step_too_large(const World& world) const;
   void require_finite_positions(const World& world) const;
   void require_bounded_speeds(const World& world) const;
   // world.dt = safety factor x `critical` (automatic), or the fixed dt (`critical` unused).

@@ -39,11 +39,12 @@ void check_each(const std::vector<PackedSphere>& spheres, const std::string& fil
 }
 
 // A settled packing rests against its container's walls: its outermost sphere surfaces lie
-// within a largest diameter of each. One that stops short (`reach`, m, of `extent`) was made
-// in a narrower container and would load as a loose heap.
-void check_fills(double reach, double extent, double largest_diameter, const std::string& file,
-                 const std::string& key, const std::string& what) {
-  if (reach >= extent - largest_diameter) return;
+// close to each. One that stops short of the container's `extent` (m) by more than `tolerance`
+// (m; `reach`: how far it gets) was made in a narrower container and would load as a loose
+// heap.
+void check_fills(double reach, double extent, double tolerance, const std::string& file, const std::string& key,
+                 const std::string& what) {
+  if (reach >= extent - tolerance) return;
   throw ConfigError(file, key,
                     "the spheres reach only " + format_significant(reach * 1e3, 4) + " mm of the " +
                         format_significant(extent * 1e3, 4) + " mm " + what +
@@ -87,6 +88,7 @@ void check_packing_in_box(const std::vector<PackedSphere>& spheres, double lengt
                                         [](const Excess& a, const Excess& c) { return a.by < c.by; });
              });
   if (spheres.empty()) return;
+  const double fill_tolerance = 2.0 * largest_diameter(spheres);
   const double extent[2] = {length, width};
   const char* axis[2] = {"length (x)", "width (y)"};
   for (int d = 0; d < 2; ++d) {
@@ -95,17 +97,15 @@ void check_packing_in_box(const std::vector<PackedSphere>& spheres, double lengt
       lo = std::min(lo, s.position[d] - s.radius);
       hi = std::max(hi, s.position[d] + s.radius);
     }
-    check_fills(hi - lo, extent[d], 2.0 * largest_diameter(spheres), file, key, axis[d]);
+    check_fills(hi - lo, extent[d], fill_tolerance, file, key, axis[d]);
   }
 }
 
 void check_packing_overlaps(const std::vector<PackedSphere>& spheres, const std::string& file,
                             const std::string& key) {
   if (spheres.empty()) return;
-  double r_max = 0.0;
-  for (const PackedSphere& s : spheres) r_max = std::max(r_max, s.radius);
   // Linked cells of edge 2 r_max: overlapping spheres lie in the same or adjacent cells.
-  const double cell = 2.0 * r_max;
+  const double cell = largest_diameter(spheres);
   const auto cell_of = [&](const Vec3& x, int d) { return static_cast<std::int64_t>(std::floor(x[d] / cell)); };
   const auto key_of = [](std::int64_t i, std::int64_t j, std::int64_t k) {
     return (static_cast<std::uint64_t>(i & 0x1fffff) << 42) | (static_cast<std::uint64_t>(j & 0x1fffff) << 21) |

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "io/packing_file.hpp"
 #include "scenario/generation.hpp"
 
 namespace colza {
@@ -26,24 +25,6 @@ std::size_t add_oedometer_piston(World& world, const OedometerSpec& o, double to
 
 namespace {
 
-void place_sample(World& world, const RunConfig& c) {
-  GenerationRequest req;
-  req.region = GenerationRegion::vertical_cylinder(Vec3::Zero(), 0.5 * c.oedometer.cylinder_diameter,
-                                                   c.oedometer.generation_height);
-  req.count = static_cast<std::size_t>(c.sample.count);
-  req.diameter_min = c.particle.diameter_min;
-  req.diameter_max = c.particle.diameter_max;
-  req.seed = c.seed;
-  req.max_attempts = static_cast<std::uint64_t>(c.sample.max_placement_attempts);
-  const std::vector<PackedSphere> spheres = generate_spheres(req);
-  if (spheres.size() < req.count)
-    throw ConfigError(c.origin_of("sample.count"), "sample.count",
-                      "only " + std::to_string(spheres.size()) + " of " + std::to_string(req.count) +
-                          " spheres fit without overlap in the generation volume; lower sample.count or raise "
-                          "oedometer.generation_height");
-  for (const PackedSphere& s : spheres) world.particles.add(s.position, s.radius, c.particle.density);
-}
-
 double total_mass(const ParticleArrays& p) {
   double m = 0.0;
   for (double mi : p.mass) m += mi;
@@ -59,17 +40,17 @@ ParticleArrays settled_sample_at_rest(const RunConfig& c, OedometerResult& r, Pr
   Stepper stepper(make_physics(c));
   World world;
   build_oedometer_container(world, c.oedometer);
-  place_sample(world, c);
-  r.particles_generated = world.particles.size();
+  r.particles_generated = place_generated_sample(
+      world, c,
+      GenerationRegion::vertical_cylinder(Vec3::Zero(), 0.5 * c.oedometer.cylinder_diameter,
+                                          c.oedometer.generation_height),
+      "oedometer.generation_height");
   r.settling = settle_generated_sample(world, stepper, c.sample, progress);
   clock.count_steps(r.settling.steps, r.particles_generated);
   discard_above(world, stepper, c.oedometer.cylinder_height);
   store_in_space_order(world, stepper);
   if (world.particles.size() == 0) throw no_sphere_left_error(c, stepper, "below the rim");
-  ParticleArrays at_rest;
-  for (std::size_t i = 0; i < world.particles.size(); ++i)
-    at_rest.add(world.particles.position[i], world.particles.radius[i], c.particle.density);
-  return at_rest;
+  return sample_at_rest(world.particles, c.particle.density);
 }
 
 }  // namespace
@@ -85,8 +66,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   if (o.packing_file.empty()) {
     world.particles = settled_sample_at_rest(c, r, progress, prep_clock);
   } else {
-    for (const PackedSphere& s : read_packing(o.packing_file, "oedometer.packing_file"))
-      world.particles.add(s.position, s.radius, c.particle.density);
+    world.particles = sample_from_packing(o.packing_file, "oedometer.packing_file", c.particle.density);
     r.particles_generated = world.particles.size();
     r.settling.converged = true;
   }

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "io/format_number.hpp"
+#include "io/packing_file.hpp"
 #include "neighbour/spatial_order.hpp"
 
 namespace colza {
@@ -81,6 +82,38 @@ void store_in_space_order(World& world, Stepper& stepper) {
   stepper.invalidate_neighbours();
 }
 
+std::size_t place_generated_sample(World& world, const RunConfig& c, const GenerationRegion& region,
+                                   const std::string& height_key) {
+  GenerationRequest req;
+  req.region = region;
+  req.count = static_cast<std::size_t>(c.sample.count);
+  req.diameter_min = c.particle.diameter_min;
+  req.diameter_max = c.particle.diameter_max;
+  req.seed = c.seed;
+  req.max_attempts = static_cast<std::uint64_t>(c.sample.max_placement_attempts);
+  const std::vector<PackedSphere> spheres = generate_spheres(req);
+  if (spheres.size() < req.count)
+    throw ConfigError(c.origin_of("sample.count"), "sample.count",
+                      "only " + std::to_string(spheres.size()) + " of " + std::to_string(req.count) +
+                          " spheres fit without overlap in the generation volume; lower sample.count or raise " +
+                          height_key);
+  for (const PackedSphere& s : spheres) world.particles.add(s.position, s.radius, c.particle.density);
+  return spheres.size();
+}
+
+ParticleArrays sample_at_rest(const ParticleArrays& from_settled, double density) {
+  ParticleArrays at_rest;
+  for (std::size_t i = 0; i < from_settled.size(); ++i)
+    at_rest.add(from_settled.position[i], from_settled.radius[i], density);
+  return at_rest;
+}
+
+ParticleArrays sample_from_packing(const std::string& file, const std::string& key, double density) {
+  ParticleArrays sample;
+  for (const PackedSphere& s : read_packing(file, key)) sample.add(s.position, s.radius, density);
+  return sample;
+}
+
 SettleResult settle_generated_sample(World& world, Stepper& stepper, const SampleSpec& sample, Progress& progress) {
   store_in_space_order(world, stepper);
   stepper.prepare(world);
@@ -131,7 +164,7 @@ std::size_t install_bonds(World& world, Stepper& stepper, double gap) {
 
 ConfigError no_sphere_left_error(const RunConfig& c, const Stepper& stepper, const std::string& where) {
   const double critical = stepper.critical_time_step_at_prepare();
-  if (!c.integration.automatic_time_step && c.integration.time_step > critical)
+  if (stepper.fixed_time_step_too_large())
     return ConfigError(c.origin_of("integration.time_step"), "integration.time_step",
                        "no sphere is left " + where + " after settling: the fixed time step " +
                            format_significant(c.integration.time_step, 6) + " s exceeds the critical estimate " +

@@ -6,6 +6,7 @@
 #include "config/run_config.hpp"
 #include "engine/stepper.hpp"
 #include "io/progress.hpp"
+#include "scenario/generation.hpp"
 
 namespace colza {
 
@@ -21,6 +22,19 @@ struct SettleResult {
 // or until `max_time` of simulated time has passed.
 SettleResult settle(World& world, Stepper& stepper, double threshold, double max_time,
                     std::uint64_t check_interval, Progress& progress);
+
+// Generates the configured sample (sample.count spheres of particle.diameter_min ..
+// diameter_max, seed, sample.max_placement_attempts) in `region` and adds it to the world.
+// When not all fit, a ConfigError names sample.count and advises raising `height_key` (the
+// generation volume's height). Returns the number placed.
+std::size_t place_generated_sample(World& world, const RunConfig& c, const GenerationRegion& region,
+                                   const std::string& height_key);
+
+// The sample a test starts from: positions and radii only, at rest, without contact
+// histories, exactly what its packing file gives back. `from_settled`: a settled world's
+// particles; `from_packing`: a packing file (`key`: its config key, for errors).
+ParticleArrays sample_at_rest(const ParticleArrays& from_settled, double density);
+ParticleArrays sample_from_packing(const std::string& file, const std::string& key, double density);
 
 // A freshly generated sample's preparation, the same for the oedometer and the shear box:
 // stored in space order (store_in_space_order), the stepper prepared, then settled under

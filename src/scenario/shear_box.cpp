@@ -7,7 +7,6 @@
 #include <string>
 
 #include "analysis/shear_strength.hpp"
-#include "io/packing_file.hpp"
 #include "scenario/generation.hpp"
 #include "scenario/plate_servo.hpp"
 
@@ -97,8 +96,7 @@ ShearSample prepare_shear_sample(const RunConfig& c, Progress& progress) {
   ShearSample s;
   const ShearBoxSpec& b = c.shear_box;
   if (!b.packing_file.empty()) {
-    for (const PackedSphere& p : read_packing(b.packing_file, "shear_box.packing_file"))
-      s.particles.add(p.position, p.radius, c.particle.density);
+    s.particles = sample_from_packing(b.packing_file, "shear_box.packing_file", c.particle.density);
     s.generated = s.particles.size();
     s.settling.converged = true;
     return s;
@@ -106,30 +104,17 @@ ShearSample prepare_shear_sample(const RunConfig& c, Progress& progress) {
   Stepper stepper(make_physics(c));
   World world;
   build_shear_box(world, b, b.generation_height);
-  GenerationRequest req;
-  req.region = GenerationRegion::box(Vec3::Zero(), Vec3(b.length, b.width, b.generation_height));
-  req.count = static_cast<std::size_t>(c.sample.count);
-  req.diameter_min = c.particle.diameter_min;
-  req.diameter_max = c.particle.diameter_max;
-  req.seed = c.seed;
-  req.max_attempts = static_cast<std::uint64_t>(c.sample.max_placement_attempts);
   StageClock clock("settling");
-  for (const PackedSphere& p : generate_spheres(req)) world.particles.add(p.position, p.radius, c.particle.density);
-  if (world.particles.size() < req.count)
-    throw ConfigError(c.origin_of("sample.count"), "sample.count",
-                      "only " + std::to_string(world.particles.size()) + " of " + std::to_string(req.count) +
-                          " spheres fit without overlap in the generation volume; lower sample.count or raise "
-                          "shear_box.generation_height");
-  s.generated = world.particles.size();
+  s.generated = place_generated_sample(world, c,
+                                       GenerationRegion::box(Vec3::Zero(), Vec3(b.length, b.width, b.generation_height)),
+                                       "shear_box.generation_height");
   s.settling = settle_generated_sample(world, stepper, c.sample, progress);
   clock.count_steps(s.settling.steps, s.generated);
   discard_above(world, stepper, b.height);
   store_in_space_order(world, stepper);
   s.stages.push_back(clock.finish());
   if (world.particles.size() == 0) throw no_sphere_left_error(c, stepper, "below the box top");
-  // The sample handed on is at rest, exactly as if read back from its packing file.
-  for (std::size_t i = 0; i < world.particles.size(); ++i)
-    s.particles.add(world.particles.position[i], world.particles.radius[i], c.particle.density);
+  s.particles = sample_at_rest(world.particles, c.particle.density);
   return s;
 }
 
