@@ -81,6 +81,10 @@ int main(int argc, char** argv) {
   CLI::App app{"colza: discrete element simulation of oilseed bulks (oedometer, shear box)"};
   app.set_version_flag("--version", std::string("colza ") + colza::kVersion + " (" + colza::git_revision() + ")");
   app.require_subcommand(1);
+  // Usage errors read like every other colza error (`colza: error: ...`), then point at --help.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string("colza: error: ") + e.what() + "\nRun with --help for more information.\n";
+  });
 
   colza::RunOptions opt;
   CLI::App* run = app.add_subcommand("run", "run a scenario and write its results to --out");

@@ -114,7 +114,10 @@ TEST(CliErrors, ExistingResultIsKeptWithoutForceAndAfterAFailedRun) {
 
 TEST(CliErrors, UsageErrorsExitWithTwo) {
   EXPECT_EQ(run_colza("run notascenario --out /tmp/x").exit_code, 2);
-  EXPECT_EQ(run_colza("run oedometer").exit_code, 2);  // --out missing
+  const CliResult missing_out = run_colza("run oedometer");
+  EXPECT_EQ(missing_out.exit_code, 2);
+  // Option-parser errors carry the same prefix as every other colza error.
+  EXPECT_EQ(missing_out.stderr_text.rfind("colza: error: --out is required", 0), 0u) << missing_out.stderr_text;
   EXPECT_EQ(run_colza("--help").exit_code, 0);
 }
 
