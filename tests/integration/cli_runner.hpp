@@ -23,6 +23,7 @@ namespace colza::testing {
 struct CliResult {
   int exit_code = -1;
   std::string stderr_text;
+  std::string stdout_text;  // run_colza only (the result lines and WARNING lines)
   bool ready_reached = false;  // run_colza_interrupted: the signal was sent when ready() held
 };
 
@@ -35,30 +36,37 @@ inline std::string read_file(const std::filesystem::path& p) {
 
 inline void write_file(const std::filesystem::path& p, const std::string& text) { std::ofstream(p) << text; }
 
-// Where a run's stderr is captured: a file of this test process in the temp folder.
+// Where a run's stderr and stdout are captured: files of this test process in the temp folder.
 inline std::filesystem::path stderr_file() {
   return std::filesystem::temp_directory_path() / ("colza-stderr-" + std::to_string(::getpid()));
 }
-
-// The shell command that runs `colza <args>` with stdout discarded and stderr into `err`.
-inline std::string colza_command(const std::string& args, const std::filesystem::path& err) {
-  return std::string(COLZA_EXECUTABLE) + " " + args + " > /dev/null 2> " + err.string();
+inline std::filesystem::path stdout_file() {
+  return std::filesystem::temp_directory_path() / ("colza-stdout-" + std::to_string(::getpid()));
 }
 
-// The captured stderr, and the file removed.
-inline std::string take_stderr(const std::filesystem::path& err) {
+// The shell command that runs `colza <args>` with stdout into `out` (discarded by default)
+// and stderr into `err`.
+inline std::string colza_command(const std::string& args, const std::filesystem::path& err,
+                                 const std::filesystem::path& out = "/dev/null") {
+  return std::string(COLZA_EXECUTABLE) + " " + args + " > " + out.string() + " 2> " + err.string();
+}
+
+// The captured text, and the file removed.
+inline std::string take_captured(const std::filesystem::path& err) {
   std::string text = read_file(err);
   std::filesystem::remove(err);
   return text;
 }
 
-// Runs `colza <args>` with stdout discarded and stderr captured.
+// Runs `colza <args>` with stdout and stderr captured.
 inline CliResult run_colza(const std::string& args) {
   const auto err = stderr_file();
-  const int status = std::system(colza_command(args, err).c_str());
+  const auto out = stdout_file();
+  const int status = std::system(colza_command(args, err, out).c_str());
   CliResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.stderr_text = take_stderr(err);
+  r.stderr_text = take_captured(err);
+  r.stdout_text = take_captured(out);
   return r;
 }
 
@@ -103,7 +111,7 @@ inline CliResult run_colza_interrupted(const std::string& args, const std::funct
     }
   }
   if (status >= 0 && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
-  r.stderr_text = take_stderr(err);
+  r.stderr_text = take_captured(err);
   return r;
 }
 

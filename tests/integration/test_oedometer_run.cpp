@@ -150,6 +150,27 @@ TEST_F(SmallOedometer, ATimeStepFarAboveTheCriticalStopsTheRunInsteadOfWritingIt
   EXPECT_FALSE(fs::exists(out / "summary.json"));
 }
 
+TEST_F(SmallOedometer, SettlingCutShortIsAWarning) {
+  // The small sample settles in 0.93 s (SummaryFollowsTheProtocol's run); stopped at 0.6 s
+  // its mean unbalanced force is ~7e-4 N against 1e-4 N. The run finishes and says so: a
+  // WARNING line and summary.json's "warnings", naming the key to raise. The default run
+  // converges and has none.
+  const fs::path out = scratch_dir("small-oedometer-unsettled");
+  fs::remove_all(out);
+  const CliResult r = run_colza("run oedometer --quiet --config " + kConfig +
+                                " --set sample.settle_max_time=0.6 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const auto s = read_json(out / "summary.json");
+  EXPECT_FALSE(s["settling"]["converged"].get<bool>());
+  const auto warnings = s["warnings"];
+  ASSERT_EQ(warnings.size(), 1u) << warnings.dump();
+  const std::string w = warnings[0].get<std::string>();
+  EXPECT_EQ(w.rfind("settling did not converge within sample.settle_max_time = 0.6 s", 0), 0u) << w;
+  EXPECT_NE(w.find("raise sample.settle_max_time"), std::string::npos) << w;
+  EXPECT_NE(r.stdout_text.find("WARNING: " + w), std::string::npos) << r.stdout_text;
+  EXPECT_TRUE(read_json(out_ / "summary.json")["warnings"].empty());
+}
+
 TEST_F(SmallOedometer, BondsAreInstalledBeforeLoadingWhenAsked) {
   const fs::path bonded = scratch_dir("small-oedometer-bonded");
   const CliResult r = run_colza("run oedometer --quiet --config " + kConfig +

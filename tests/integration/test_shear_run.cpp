@@ -87,6 +87,30 @@ TEST_F(SmallShearSeries, ALoadTheServoCannotHoldIsAWarning) {
   EXPECT_TRUE(read_json(out_ / "load-78750Pa" / "summary.json")["warnings"].empty());
 }
 
+TEST_F(SmallShearSeries, SpheresLeavingTheBoxAreAWarning) {
+  // A rim of 0.5 mm under 20 mm of shear, without bonds: the upper half's spheres over the
+  // uncovered strip (x from 0 to the offset, ~19 mm wide) have no floor and fall out of the
+  // box (49 of 439 with this packing). The run finishes and says so: a WARNING line and
+  // summary.json's "warnings". The series' loads (rim 20 mm, 3 mm of shear) have none.
+  const fs::path out = scratch_dir("small-shear-leaking");
+  const CliResult r = run_colza("run shear --quiet --normal-stress 25750 --config " + kConfig +
+                                " --set shear_box.packing_file=" + (out_ / "packing.txt").string() +
+                                " --set contact.bond=\"none\" --set shear_box.rim_length=0.0005"
+                                " --set shear_box.shear_displacement=0.02 --set shear_box.strength_window_end=0.02"
+                                " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const auto s = read_json(out / "summary.json");
+  const int outside = s["particles_outside"].get<int>();
+  EXPECT_GT(outside, 0);
+  const auto warnings = s["warnings"];
+  ASSERT_EQ(warnings.size(), 1u) << warnings.dump();
+  EXPECT_EQ(warnings[0].get<std::string>(), std::to_string(outside) + " particles ended outside the box");
+  EXPECT_NE(r.stdout_text.find("WARNING: " + std::to_string(outside) + " particles ended outside the box"),
+            std::string::npos)
+      << r.stdout_text;
+  EXPECT_TRUE(read_json(out_ / "load-25750Pa" / "summary.json")["warnings"].empty());
+}
+
 TEST_F(SmallShearSeries, ShearForceIsPositiveAndStartsNearZero) {
   std::vector<std::string> header;
   const auto rows = read_rows(out_ / "load-78750Pa" / "curve.csv", header);
