@@ -33,8 +33,4 @@ void write_result_h5(const std::string& file, const std::string& scenario, const
 // oedometer's and the shear box's "warnings"), naming the key to raise.
 std::string settling_warning(const RunConfig& c, const SettleResult& settling);
 
-void run_shear_scenario(const RunConfig& config, const RunOptions& options, class OutputStaging& out);
-// The series manages its own output directory (it resumes finished loads). Returns the exit code.
-int run_shear_series(const RunConfig& config, const RunOptions& options);
-
 }  // namespace colza

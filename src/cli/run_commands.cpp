@@ -1,6 +1,7 @@
 #include "cli/run_commands.hpp"
 
 #include "cli/command_common.hpp"
+#include "cli/shear_commands.hpp"
 
 #include <chrono>
 #include <cstdio>

@@ -1,5 +1,5 @@
-// `colza run shear` (one normal load) and `colza run shear-series` (every load of the
-// config, concurrently up to --jobs, resuming loads already finished).
+#include "cli/shear_commands.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

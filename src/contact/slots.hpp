@@ -8,6 +8,7 @@
 // contact loop, so the loop itself is compiled for the concrete combination.
 #pragma once
 #include <cmath>
+#include <type_traits>
 #include <variant>
 #include "core/materials.hpp"
 #include "core/types.hpp"
@@ -25,6 +26,15 @@ struct LinearNormal {
 };
 
 using NormalSlot = std::variant<LinearNormal>;
+
+// Code outside the contact loop that reads the normal law as the linear spring Fn = Kn un:
+// the overlap guard's un = Fn / Kn (engine/motion_limits.cpp), the critical time step's
+// translational stiffness Kn + Ks (integrate/time_step.cpp) and the shear-box servo's plate
+// stiffness Kn per contact (scenario/shear_box.cpp). Each static_asserts this, so a new
+// normal alternative (Hertz, say) fails to compile there until those places take the slot's
+// own overlap and tangent stiffness, instead of silently misjudging them.
+inline constexpr bool kNormalLawIsLinear =
+    std::variant_size_v<NormalSlot> == 1 && std::is_same_v<std::variant_alternative_t<0, NormalSlot>, LinearNormal>;
 
 // ---- tangential slot ----------------------------------------------------------------
 

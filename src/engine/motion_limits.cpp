@@ -2,10 +2,13 @@
 
 #include <algorithm>
 
+#include "contact/slots.hpp"
+
 namespace colza {
 
 DeepestOverlap deepest_overlap(const ParticleArrays& p, const std::vector<Wall>& walls, const ContactStore& contacts,
                                const PairTable& pairs) {
+  static_assert(kNormalLawIsLinear, "the overlap is read back from the normal force as un = Fn / Kn");
   DeepestOverlap deepest;
   const auto consider = [&](double normal_force, double kn, double radius, bool with_wall, std::size_t a,
                             std::size_t b) {

@@ -32,9 +32,14 @@
 
 namespace colza::detail {
 
-template <class Normal, class Tangential>
+// The slot combinations the lanes compute (lane_law.hpp hard-codes the linear spring, the
+// Coulomb cap and the contact bond's rule: an intact bond has no friction cap and breaks at Cn
+// or Cs). A new alternative in any slot is false here and takes the scalar loop until it gets
+// lanes of its own; ForcePaths compares the two bit for bit.
+template <class Normal, class Tangential, class Bond = NoBond>
 inline constexpr bool kHasBatchedKernel =
-    std::is_same_v<Normal, LinearNormal> && std::is_same_v<Tangential, CoulombTangential>;
+    std::is_same_v<Normal, LinearNormal> && std::is_same_v<Tangential, CoulombTangential> &&
+    (std::is_same_v<Bond, NoBond> || std::is_same_v<Bond, ContactBond>);
 
 // Inputs and outputs of up to kLanes contacts (pairs touching at the start of the step), one
 // array per component, and up to kLanes candidates of the same chunk whose spheres were
@@ -123,7 +128,9 @@ inline void fill_lanes(PairBatch& b, const ParticleArrays& p, const ContactHisto
 // see pair_force.hpp and contact_law.hpp for the physics.
 template <class Bond, bool kSlip>
 inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& q, double dt, double half_dt) {
-  constexpr bool kBonds = !std::is_same_v<Bond, NoBond>;
+  static_assert(std::is_same_v<Bond, NoBond> || std::is_same_v<Bond, ContactBond>,
+                "the lanes compute the contact bond's rule only (kHasBatchedKernel)");
+  constexpr bool kBonds = std::is_same_v<Bond, ContactBond>;
   double cn = 0.0, cs = 0.0;
   if constexpr (kBonds) {
     cn = bond.normal_strength;

@@ -158,7 +158,7 @@ template <class Normal, class Tangential, class Bond, class Out, class Sink>
   const Index* first = pp.first.data();
   const Index* second = pp.second.data();
   ContactHistory* history = pp.history.data();
-  if constexpr (kHasBatchedKernel<Normal, Tangential>) {
+  if constexpr (kHasBatchedKernel<Normal, Tangential, Bond>) {
     if (pairs.particle_material_count() == 1) {
       particle_pairs_batched(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt, first,
                              second, history, begin, end, out, sink);

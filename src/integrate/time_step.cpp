@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "contact/slots.hpp"
+
 namespace colza {
 
 namespace {
@@ -21,6 +23,7 @@ bool sphere_overlaps_wall(const ParticleArrays& p, Index i, const Wall& wall) {
 
 double critical_time_step(const ParticleArrays& p, const std::vector<Wall>& walls, const ContactStore& contacts,
                           const PairTable& pairs, CountedContacts counted) {
+  static_assert(kNormalLawIsLinear, "a contact's translational stiffness is taken as Kn + Ks (linear springs)");
   const bool overlaps_count = counted == CountedContacts::kTouchingOrOverlapping;
   const std::size_t n = p.size();
   std::vector<double> k_trans(n, 0.0), k_shear(n, 0.0);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "analysis/shear_strength.hpp"
+#include "contact/slots.hpp"
 #include "scenario/generation.hpp"
 #include "scenario/plate_servo.hpp"
 
@@ -164,6 +165,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
   if (c.contact.bond_install == BondInstallMoment::kAfterSettling) r.bonds_installed = install_bonds(world, stepper, c.contact.bond_gap);
 
   PlateServo servo{normal_stress * area, b.servo_relaxation, b.servo_max_speed};
+  static_assert(kNormalLawIsLinear, "the servo takes Kn per plate contact as the plate's stiffness");
   const double plate_kn = stepper.pairs().particle_wall(0, world.walls[ids.plate].material).kn;
   auto control_plate = [&](World& w) {
     Wall& plate = w.walls[ids.plate];
