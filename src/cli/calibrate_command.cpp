@@ -15,6 +15,7 @@
 #include "calibration/report.hpp"
 #include "calibration/spec.hpp"
 #include "config/config_error.hpp"
+#include "core/unstable_motion.hpp"
 #include "core/version.hpp"
 #include "io/format_number.hpp"
 #include "io/output_dir.hpp"
@@ -40,8 +41,22 @@ std::string spec_key(const Spec& spec, const std::string& key) {
   return key;
 }
 
-// Runs `step`; bad input (ConfigError, CalibrationError) is printed naming file, key and
-// reason and turned into exit code 2. Returns 0 when `step` succeeded.
+// A design run that blew up with the model's time step fixed above the critical estimate
+// (a stiffer design point needs a smaller one): bad input, blamed on where the time step was
+// set, the spec's [model] set or the model config (as `colza run` blames integration.time_step).
+ConfigError fixed_time_step_error(const Spec& spec, const UnstableMotion& e) {
+  const std::string reason = "the fixed time step exceeds the critical estimate of a design run and its motion blew "
+                             "up: " + std::string(e.what()) + "; lower integration.time_step, remove it (the "
+                             "automatic time step follows the design point's stiffness) or narrow the design range; "
+                             "finished design runs are kept";
+  for (const std::string& o : spec.model_set)
+    if (o.rfind("integration.time_step=", 0) == 0) return ConfigError(spec.file, "model.set", reason);
+  return ConfigError(spec.model_config, "integration.time_step", reason);
+}
+
+// Runs `step`; bad input (ConfigError, CalibrationError, a fixed time step that made a design
+// run blow up) is printed naming file, key and reason and turned into exit code 2. Returns 0
+// when `step` succeeded.
 template <class Step>
 int input_errors_to_exit_code(const CalibrateOptions& opt, const Spec& spec, Step&& step) {
   try {
@@ -52,6 +67,10 @@ int input_errors_to_exit_code(const CalibrateOptions& opt, const Spec& spec, Ste
   } catch (const CalibrationError& e) {
     std::fprintf(stderr, "colza: error: %s: key '%s': %s\n", opt.spec_path.c_str(), spec_key(spec, e.key()).c_str(),
                  e.what());
+    return 2;
+  } catch (const UnstableMotion& e) {
+    if (!e.fixed_time_step_too_large()) throw;  // main reports it, exit 1
+    std::fprintf(stderr, "colza: error: %s\n", fixed_time_step_error(spec, e).what());
     return 2;
   }
   return 0;

@@ -250,6 +250,35 @@ TEST_F(CalibrateCompression, BadMeasuredDataAreClearErrors) {
   EXPECT_FALSE(fs::exists(dir_ / "e1" / "summary.json"));
 }
 
+TEST_F(CalibrateCompression, AFixedTimeStepThatBlowsADesignRunApartNamesWhereItWasSet) {
+  // dt = 1 ms, ~100 times the critical estimate: the first design run blows up within a few
+  // steps (as SmallOedometer.ATimeStepFarAboveTheCriticalStopsTheRunInsteadOfWritingItsCurve).
+  // Bad input, exit 2, naming where the time step was set: the spec's [model] set, or the
+  // model config's key.
+  const std::string spec = read_file(dir_ / "spec.toml");
+  const std::string stop = "\"oedometer.stop_force=1500.0\", ";
+  write_file(dir_ / "dt-set.toml",
+             std::string(spec).replace(spec.find(stop), stop.size(), stop + "\"integration.time_step=1e-3\", "));
+  CliResult r = run_colza("calibrate compression --quiet --spec " + (dir_ / "dt-set.toml").string() + " --out " +
+                          (dir_ / "dt1").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("dt-set.toml: key 'model.set': the fixed time step exceeds the critical estimate"),
+            std::string::npos)
+      << r.stderr_text;
+  EXPECT_FALSE(fs::exists(dir_ / "dt1" / "summary.json"));
+  const fs::path model = dir_ / "fixed-dt-model.toml";
+  write_file(model, read_file(kOed) + "\n[integration]\ntime_step = 1e-3\n");
+  write_file(dir_ / "dt-model.toml",
+             std::string(spec).replace(spec.find(kOed), kOed.size(), model.string()));
+  r = run_colza("calibrate compression --quiet --spec " + (dir_ / "dt-model.toml").string() + " --out " +
+                (dir_ / "dt2").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("fixed-dt-model.toml: key 'integration.time_step': the fixed time step exceeds"),
+            std::string::npos)
+      << r.stderr_text;
+  EXPECT_FALSE(fs::exists(dir_ / "dt2" / "summary.json"));
+}
+
 TEST_F(CalibrateCompression, BadSpecValuesAndOutputFoldersAreRefusedBeforeAnyRun) {
   const std::string spec = read_file(dir_ / "spec.toml");
   const auto refused = [&](const std::string& name, const std::string& text, const std::string& args,
