@@ -57,8 +57,9 @@ Scenario scenario_of(const Spec& s) { return s.stage == Stage::kShear ? Scenario
 
 // The settled sample depends on everything but the bond strengths (installed before
 // loading), the loads and the keys of the shearing stage: specs that shear further or
-// shorter, or record more often, share one sample.
-std::string sample_fingerprint(const RunConfig& c) {
+// shorter, or record more often, share one sample. And on the packing file's contents when
+// the config names one (`packing_line`, file_contents_line).
+std::string sample_fingerprint(const RunConfig& c, const std::string& packing_line) {
   toml::table doc = toml::parse(c.resolved_toml);
   if (auto* box = doc["shear_box"].as_table())
     for (const char* k : {"normal_stresses", "shear_displacement", "shear_speed", "strength_window_start",
@@ -66,14 +67,17 @@ std::string sample_fingerprint(const RunConfig& c) {
       box->erase(k);
   if (auto* contact = doc["contact"].as_table()) contact->erase("contact_bond");
   std::ostringstream text;
-  text << doc;
+  text << doc << packing_line;
   return fingerprint_text(text.str());
 }
 
 }  // namespace
 
 DemModel::DemModel(const Spec& spec, fs::path runs_dir, bool verbose)
-    : spec_(spec), runs_(std::move(runs_dir)), verbose_(verbose) {
+    : spec_(spec),
+      runs_(std::move(runs_dir)),
+      verbose_(verbose),
+      fixed_packing_line_(file_contents_line(spec.fixed_packing_file)) {
   fs::create_directories(runs_);
 }
 
@@ -127,7 +131,7 @@ RunConfig DemModel::config_for(const Eigen::VectorXd& x, int replicate, std::str
     o.push_back(spec_.problem.parameters[j].key + "=" + num17(x[j]));
   for (const auto& s : seed_override(replicate)) o.push_back(s);
   RunConfig c = load_run_config(scenario_of(spec_), spec_.model_config, o);
-  std::string text = c.resolved_toml;
+  std::string text = c.resolved_toml + fixed_packing_line_;
   if (spec_.shared_packing) {
     const auto [path, packing_fp] = shared_packing(replicate);
     c.oedometer.packing_file = path;
@@ -141,7 +145,7 @@ std::shared_ptr<const ShearSample> DemModel::shear_sample(const RunConfig& c) {
   // One settled sample per sample fingerprint (different seeds settle at the same time),
   // kept in runs/sample-<fp>/packing.txt; every design run starts from the packing file
   // (identical start whether fresh or resumed).
-  const std::string fp = sample_fingerprint(c);
+  const std::string fp = sample_fingerprint(c, fixed_packing_line_);
   return samples_.get(fp, [&] {
     const fs::path dir = runs_ / ("sample-" + fp);
     const fs::path file = dir / "packing.txt";

@@ -71,6 +71,10 @@ class DemModel {
   mutable std::mutex note_mutex_;      // packing_note_, warnings_
   std::string packing_note_;
   std::vector<std::string> warnings_;
+  // The contents of the packing file every run loads (spec.fixed_packing_file), read once:
+  // part of every run's and sample's fingerprint, so that a file replaced under the same
+  // path is not answered with the old file's runs.
+  const std::string fixed_packing_line_;
 };
 
 }  // namespace colza::calibration

@@ -37,11 +37,7 @@ std::string config_fingerprint(const RunConfig& c) {
   toml::table doc = toml::parse(c.resolved_toml);
   if (auto* box = doc["shear_box"].as_table()) box->erase("normal_stresses");
   std::ostringstream text;
-  text << doc;
-  if (!c.shear_box.packing_file.empty()) {
-    std::ifstream packing(c.shear_box.packing_file, std::ios::binary);
-    text << "\n# packing " << packing.rdbuf();
-  }
+  text << doc << file_contents_line(c.shear_box.packing_file);
   return fingerprint_text(text.str());
 }
 

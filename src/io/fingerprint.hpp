@@ -3,6 +3,8 @@
 #pragma once
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace colza {
@@ -13,6 +15,17 @@ inline std::string fingerprint_text(const std::string& text) {
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
   return buf;
+}
+
+// A line for a fingerprint's text that stands for the contents of `file` (a packing file a
+// run loads): a file replaced under the same path then makes other runs, where its path
+// alone would have reused the runs made from the old contents. "" for no file.
+inline std::string file_contents_line(const std::string& file) {
+  if (file.empty()) return "";
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return "\n# contents of " + file + ": " + fingerprint_text(bytes.str()) + "\n";
 }
 
 }  // namespace colza

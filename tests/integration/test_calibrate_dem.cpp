@@ -207,6 +207,40 @@ TEST_F(CalibrateCompression, ASharedRunsDirectoryServesTheOtherMode) {
   EXPECT_NE(warned.find(id + " (0123abc)"), std::string::npos) << warned;
 }
 
+TEST_F(CalibrateCompression, APackingFileReplacedUnderTheSamePathIsNotAnsweredWithTheOldRuns) {
+  // Every run loads the spec's packing file. Replaced by another packing under the same path,
+  // the runs made from the old one must not be reused (a run's fingerprint holds the file's
+  // contents, not only its path): the robustness review's silent wrong answer, session 24.
+  const fs::path packing = dir_ / "replaced" / "packing.txt";
+  fs::create_directories(packing.parent_path());
+  const std::string original = read_file(dir_ / "pack" / "packing.txt");
+  write_file(packing, original);
+  std::string spec = read_file(dir_ / "spec.toml");
+  const std::string old_path = (dir_ / "pack" / "packing.txt").string();
+  spec.replace(spec.find(old_path), old_path.size(), packing.string());
+  write_file(dir_ / "replaced.toml", spec);
+  const fs::path runs = dir_ / "replaced-runs";
+  const std::string args = "calibrate compression --quiet --jobs 2 --spec " + (dir_ / "replaced.toml").string() +
+                           " --runs " + runs.string() + " --force --out " + (dir_ / "replaced-out").string();
+  ASSERT_EQ(run_colza(args).exit_code, 0);
+  ASSERT_EQ(run_colza(args).exit_code, 0);  // the same file: every run reused
+  EXPECT_EQ(read_json(dir_ / "replaced-out" / "summary.json")["runs_reused"].get<int>(), 6);
+  const auto run_folders = [&] {
+    std::size_t n = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(runs)) ++n;
+    return n;
+  };
+  const std::size_t made = run_folders();
+  // Another packing under the same path: the last sphere left out (still settled and filling).
+  write_file(packing, original.substr(0, original.find_last_of('\n', original.size() - 2) + 1));
+  ASSERT_NE(read_file(packing), original);
+  // Every design run is made again. (On this chaotic small sample the new packing's curves
+  // may put the measurement out of the design's reach, an exit 2 after the runs.)
+  const CliResult r = run_colza(args);
+  EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 2) << r.stderr_text;
+  EXPECT_GE(run_folders(), made + 5);  // the five design points anew (and the validation run, if it gets there)
+}
+
 TEST_F(CalibrateCompression, BadMeasuredDataAreClearErrors) {
   // A curve that never reaches the fit range.
   write_file(dir_ / "short.csv", "displacement,force\n0,0\n0.001,100\n0.002,300\n");
