@@ -45,7 +45,8 @@ double curve_strength(const std::vector<double>& displacement, const std::vector
 
 MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double normal_stress,
                                              const StrengthDefinition& strength, const std::string& spec_file,
-                                             const std::string& key, std::vector<std::string>& warnings) {
+                                             const std::string& key, std::vector<std::string>& warnings,
+                                             double box_length) {
   const StrengthWindow window = strength.window;
   if (!std::filesystem::exists(csv))
     throw ConfigError(spec_file, key, "the measured shear curve " + csv + " does not exist");
@@ -60,6 +61,11 @@ MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double norm
   if (d.empty()) throw ConfigError(spec_file, key, csv + ": the curve has no rows after its header line");
   require_increasing(d, lines, kShearDisplacementColumn, csv, spec_file, key);
   c.max_displacement = d.back();
+  // A box cannot be sheared by more than its length: such a column is not in metres.
+  if (c.max_displacement > box_length)
+    throw ConfigError(spec_file, key, csv + ": the shear displacement reaches " + fmt(c.max_displacement) +
+                                          ", more than the box's length shear_box.length = " + fmt(box_length) +
+                                          " m: colza reads shear_displacement in m (mm / 1000) and shear_stress in Pa");
   c.shear_strength = curve_strength(d, tau, strength, c.window_points, c.peak_displacement);
   if (strength.peak) {
     if (c.window_points == 0)

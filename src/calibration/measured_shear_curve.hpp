@@ -47,12 +47,14 @@ double curve_strength(const std::vector<double>& displacement, const std::vector
 
 // Reads and checks one curve. Errors (ConfigError naming spec_file, key and the CSV's path):
 // missing file, missing column, a cell that is not a number, displacement not strictly
-// increasing, a curve that ends before the window does, fewer than 2 rows in the window.
+// increasing, a displacement beyond the box's length `box_length` (m: a curve in mm),
+// a curve that ends before the window does, fewer than 2 rows in the window.
 // Uneven displacement steps inside the window add a warning.
 // Peak mode: a curve shorter than the peak width, or fewer than 2 rows in the peak's
 // interval, is an error; a peak in the curve's last peak width adds a warning.
 MeasuredShearCurve read_measured_shear_curve(const std::string& csv, double normal_stress,
                                              const StrengthDefinition& strength, const std::string& spec_file,
-                                             const std::string& key, std::vector<std::string>& warnings);
+                                             const std::string& key, std::vector<std::string>& warnings,
+                                             double box_length);
 
 }  // namespace colza::calibration

@@ -134,6 +134,11 @@ std::string resolve(const std::string& spec_file, const std::string& value) {
 
 // "" when the model config loads with `key` = `value` added to the spec's overrides, else
 // why not ("the model does not accept particle.density = -1200: must be positive, ...").
+// Least normal stress of a lab direct shear test (Pa); below it a load is taken for kPa.
+constexpr double kLeastLabNormalStress = 100.0;
+// Least tau / sigma at failure of a granular bulk: tan(1 deg).
+constexpr double kLeastStrengthRatio = 0.017;
+
 std::string model_rejects(const Spec& s, Scenario scenario, const std::string& key, double value) {
   // The value exactly as a run would be given it: rounded to 6 digits, a bound just past a
   // model limit (0.9990001 for a limit of 0.999) would pass here and be refused mid-calibration.
@@ -337,7 +342,23 @@ Spec read_spec(const std::string& path) {
       const auto cols = read_csv_columns(s.measured_file, {dcol, fcol}, path, "measured.curve", lines);
       require_increasing(cols[0], lines, dcol, s.measured_file, path, "measured.curve");
       const double fmin = s.base.oedometer.fit_force_min, fmax = s.base.oedometer.fit_force_max;
-      const double peak = cols[1].empty() ? 0.0 : *std::max_element(cols[1].begin(), cols[1].end());
+      if (cols[0].empty()) m.fail("curve", s.measured_file + ": the curve has no rows after its header line");
+      // Units (colza reads m and N): a piston cannot travel further than the sample is high,
+      // and a curve whose largest force is under 1 % of the fit range's top is in kN or a
+      // lever's units, not one to shorten the fit range for.
+      const double cylinder_height = s.base.oedometer.cylinder_height;
+      if (cols[0].back() > cylinder_height)
+        m.fail("curve", s.measured_file + ": the displacement reaches " + fmt(cols[0].back()) + ", more than the "
+                            "sample's height oedometer.cylinder_height = " + fmt(cylinder_height) +
+                            " m: colza reads " + dcol + " in m (mm / 1000)");
+      const double peak = *std::max_element(cols[1].begin(), cols[1].end());
+      if (!(peak > 0.0))
+        m.fail("curve", s.measured_file + ": the curve has no positive force (" + fcol + " in N, compression "
+                            "positive)");
+      if (peak < 0.01 * fmax)
+        m.fail("curve", s.measured_file + ": its largest force is " + fmt(peak) + " N, under 1 % of "
+                            "oedometer.fit_force_max = " + fmt(fmax) + " N: colza reads " + fcol +
+                            " in N (kN x 1000); is it in kN?");
       if (peak < fmax)
         m.fail("curve", s.measured_file + ": the curve never reaches its fit range: its largest force is " + fmt(peak) +
                             " N, the fit runs to oedometer.fit_force_max = " + fmt(fmax) +
@@ -414,7 +435,8 @@ Spec read_spec(const std::string& path) {
         const double normal_stress = c.positive("normal_stress");
         const std::string file = resolve(path, c.string("file", "", true));
         const MeasuredShearCurve curve =
-            read_measured_shear_curve(file, normal_stress, s.strength, path, c.full("file"), s.warnings);
+            read_measured_shear_curve(file, normal_stress, s.strength, path, c.full("file"), s.warnings,
+                                      s.base.shear_box.length);
         if (!(curve.shear_strength > 0.0))
           c.fail("file", file + ": the shear strength (" + s.strength.describe() + ") is " + fmt(curve.shear_strength) +
                              " Pa; a shear strength must be > 0 (check the sign and units of shear_stress, Pa)");
@@ -423,6 +445,19 @@ Spec read_spec(const std::string& path) {
         tau.push_back(curve.shear_strength);
         s.measured_curves.push_back(curve);
       }
+    }
+    // Units (colza reads Pa): a lab direct shear load is kilopascals, not tens of pascals, and
+    // at failure tau / sigma of a granular bulk is tan(Phi) plus cohesion over sigma, never
+    // below tan(1 deg) = 0.017. A column in kPa beside one in Pa breaks one or the other;
+    // refused here, before any design run is spent on loads of 26 Pa.
+    for (std::size_t k = 0; k < sigma.size(); ++k) {
+      if (sigma[k] < kLeastLabNormalStress)
+        m.fail(source_key, "a normal stress of " + fmt(sigma[k]) + " Pa, below " + fmt(kLeastLabNormalStress) +
+                               " Pa: colza reads Pa (25.75 kPa is 25750); are these kPa?");
+      if (tau[k] / sigma[k] < kLeastStrengthRatio)
+        m.fail(source_key, "a shear strength of " + fmt(tau[k]) + " Pa at a normal stress of " + fmt(sigma[k]) +
+                               " Pa, tau / sigma = " + fmt(tau[k] / sigma[k]) + " < " + fmt(kLeastStrengthRatio) +
+                               ": colza reads both in Pa; is the shear stress in kPa?");
     }
     std::set<double> distinct(sigma.begin(), sigma.end());
     if (distinct.size() < 2)
@@ -437,8 +472,12 @@ Spec read_spec(const std::string& path) {
     if (s.loads.empty()) s.loads = {*distinct.begin(), *distinct.rbegin()};  // the paper: lowest and highest
     if (std::set<double>(s.loads.begin(), s.loads.end()).size() < 2)
       m.fail("loads", "needs two or more distinct normal stresses (Pa)");
-    for (double l : s.loads)
+    for (double l : s.loads) {
       if (!(l > 0.0)) m.fail("loads", "normal stresses must be > 0 (Pa)");
+      if (l < kLeastLabNormalStress)
+        m.fail("loads", "a normal stress of " + fmt(l) + " Pa, below " + fmt(kLeastLabNormalStress) +
+                            " Pa: colza reads Pa (25.75 kPa is 25750); are these kPa?");
+    }
     if (const std::string clash = loads_sharing_a_label(s.loads); !clash.empty()) m.fail("loads", clash);
     // The measured C and tan(Phi) come from one line through the measured strengths: unless
     // the spec gives the correlation of their errors ([measured] correlation), it is that of

@@ -40,6 +40,8 @@
 
 #include <map>
 #include <set>
+#include <sstream>
+#include <tuple>
 
 #include <cmath>
 
@@ -268,6 +270,28 @@ TEST_F(CalibrateCompression, BadMeasuredDataAreClearErrors) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.stderr_text.find("scatter.replicates"), std::string::npos) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("another seed gives the same run"), std::string::npos) << r.stderr_text;
+  // The curve in mm and in kN: refused with the units named, before any run (the fit range
+  // would otherwise be "lowered" to 1.4 N, or the design runs spent on an unreachable c1).
+  const std::string measured = read_file(dir_ / "measured.csv");
+  std::string in_mm = "displacement,force\n", in_kn = "displacement,force\n";
+  std::istringstream rows(measured.substr(measured.find('\n') + 1));
+  for (std::string line; std::getline(rows, line);) {
+    const double d = std::stod(line.substr(0, line.find(','))), f = std::stod(line.substr(line.find(',') + 1));
+    in_mm += std::to_string(d * 1e3) + "," + std::to_string(f) + "\n";
+    in_kn += std::to_string(d) + "," + std::to_string(f * 1e-3) + "\n";
+  }
+  for (const auto& [name, text, said] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"mm", in_mm, "more than the sample's height oedometer.cylinder_height = 0.03 m: colza reads displacement in m"},
+           {"kN", in_kn, "under 1 % of oedometer.fit_force_max = 1400 N: colza reads force in N (kN x 1000); is it in kN?"}}) {
+    write_file(dir_ / (name + ".csv"), text);
+    write_file(dir_ / (name + ".toml"), std::string(spec).replace(spec.find("measured.csv"), 12, name + ".csv"));
+    r = run_colza("calibrate compression --spec " + (dir_ / (name + ".toml")).string() + " --out " +
+                  (dir_ / ("e-" + name)).string());
+    EXPECT_EQ(r.exit_code, 2) << name;
+    EXPECT_NE(r.stderr_text.find("key 'measured.curve'"), std::string::npos) << r.stderr_text;
+    EXPECT_NE(r.stderr_text.find(said), std::string::npos) << r.stderr_text;
+  }
   // A missing file.
   write_file(dir_ / "missing.toml", std::string(spec).replace(spec.find("measured.csv"), 12, "nowhere.csv"));
   r = run_colza("calibrate compression --spec " + (dir_ / "missing.toml").string() + " --out " + (dir_ / "e2").string());
@@ -498,7 +522,8 @@ TEST(CalibrateShearCurves, BadCurvesAreClearErrorsWithExitCode2) {
       {"shear_displacement,shear_stress\n0,0\n0.0015,2e4\n0.002,abc\n0.003,2e4\n", "line 4: column \"shear_stress\" is \"abc\""},
       {"shear_displacement,shear_stress\n0,0\n0.0015,2e4\n0.0025,2e4\n", "ends at a shear displacement of 0.0025 m"},
       {"shear_displacement,shear_stress\n0,0\n0.001,2e4\n0.003,2e4\n", "1 row(s) inside the strength window"},
-      {"shear_displacement,shear_stress\n0,0\n0.002,2e4\n0.0015,2e4\n0.003,2e4\n", "does not increase"}};
+      {"shear_displacement,shear_stress\n0,0\n0.002,2e4\n0.0015,2e4\n0.003,2e4\n", "does not increase"},
+      {"shear_displacement,shear_stress\n0,0\n1.5,2e4\n2,2e4\n3,2e4\n", "colza reads shear_displacement in m"}};
   for (std::size_t c = 0; c < cases.size(); ++c) {
     const std::string name = "high" + std::to_string(c) + ".csv";
     if (!cases[c].first.empty()) write_file(dir / name, cases[c].first);
@@ -512,6 +537,27 @@ TEST(CalibrateShearCurves, BadCurvesAreClearErrorsWithExitCode2) {
     EXPECT_NE(r.stderr_text.find(cases[c].second), std::string::npos) << r.stderr_text;
     EXPECT_FALSE(fs::exists(out / "summary.json"));
   }
+  // Shear stresses in kPa beside normal stresses in Pa (a curve), and both in kPa (results):
+  // refused before any run is spent on them.
+  write_file(dir / "high-kpa.csv", "shear_displacement,shear_stress\n0,0\n0.0015,50\n0.002,51\n0.003,52\n");
+  write_file(dir / "spec-kpa.toml", shear_spec("high-kpa.csv"));
+  CliResult r = run_colza("calibrate shear --spec " + (dir / "spec-kpa.toml").string() + " --out " +
+                          (dir / "out-kpa").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("key 'measured.curves': a shear strength of 51 Pa at a normal stress of 78750 Pa"),
+            std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("is the shear stress in kPa?"), std::string::npos) << r.stderr_text;
+  write_file(dir / "results-kpa.csv", "normal_stress,shear_strength\n25.75,25.16\n78.75,53.56\n");
+  std::string results_spec = shear_spec("unused.csv");
+  results_spec = results_spec.substr(0, results_spec.find("[[measured.curves]]")) + "results = \"results-kpa.csv\"\n";
+  write_file(dir / "spec-results-kpa.toml", results_spec);
+  r = run_colza("calibrate shear --spec " + (dir / "spec-results-kpa.toml").string() + " --out " +
+                (dir / "out-results-kpa").string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("key 'measured.results': a normal stress of 25.75 Pa, below 100 Pa"),
+            std::string::npos) << r.stderr_text;
+  EXPECT_FALSE(fs::exists(dir / "out-kpa" / "summary.json"));
+  EXPECT_FALSE(fs::exists(dir / "out-results-kpa" / "summary.json"));
 }
 
 TEST(CalibrateShearLoads, LoadsSharingALabelAreRefusedBeforeAnyRun) {

@@ -21,6 +21,7 @@ using namespace colza::calibration;
 namespace {
 
 const StrengthDefinition kWindow{false, {0.0015, 0.003}};  // mean over 1.5-3 mm, tests/data/small_shear.toml
+constexpr double kBoxLength = 0.060;                           // m, tests/data/small_shear.toml
 
 class MeasuredShearCurveTest : public ::testing::Test {
  protected:
@@ -36,7 +37,7 @@ class MeasuredShearCurveTest : public ::testing::Test {
   std::string error_of(const std::string& csv) const {
     std::vector<std::string> warnings;
     try {
-      read_measured_shear_curve(csv, 25e3, kWindow, "spec.toml", "measured.curves[0].file", warnings);
+      read_measured_shear_curve(csv, 25e3, kWindow, "spec.toml", "measured.curves[0].file", warnings, kBoxLength);
     } catch (const ConfigError& e) {
       EXPECT_EQ(e.file(), "spec.toml");
       EXPECT_EQ(e.key(), "measured.curves[0].file");
@@ -87,7 +88,7 @@ TEST(PeakShearStrength, LargestMeanOverATrailingIntervalOfTheWidth) {
 
 TEST_F(MeasuredShearCurveTest, StrengthIsTheMeanStressOverTheWindow) {
   std::vector<std::string> warnings;
-  const auto c = read_measured_shear_curve(even_curve("c.csv", 3.0), 25e3, kWindow, "spec.toml", "k", warnings);
+  const auto c = read_measured_shear_curve(even_curve("c.csv", 3.0), 25e3, kWindow, "spec.toml", "k", warnings, kBoxLength);
   // Rows at 1.5, 2.0, 2.5, 3.0 mm: tau = 1150, 1200, 1250, 1300 Pa.
   EXPECT_EQ(c.window_points, 4u);
   EXPECT_EQ(c.rows, 7u);
@@ -107,9 +108,19 @@ TEST_F(MeasuredShearCurveTest, ColzasOwnCurveFileIsAValidCurve) {
                                 "0.2,0.00225,44,1100,25000\n"
                                 "0.3,0.003,48,1200,25000\n");
   std::vector<std::string> warnings;
-  const auto c = read_measured_shear_curve(csv, 25e3, kWindow, "spec.toml", "k", warnings);
+  const auto c = read_measured_shear_curve(csv, 25e3, kWindow, "spec.toml", "k", warnings, kBoxLength);
   EXPECT_NEAR(c.shear_strength, 1100.0, 1e-9);
   EXPECT_EQ(c.window_points, 3u);
+}
+
+TEST_F(MeasuredShearCurveTest, DisplacementInMillimetresIsAnError) {
+  // 0 to 3 mm written in mm: it reaches 3, more than the 0.06 m box can be sheared.
+  std::string t = "shear_displacement,shear_stress\n";
+  for (int k = 0; k <= 6; ++k) t += std::to_string(0.5 * k) + "," + std::to_string(1000 + 50 * k) + "\n";
+  const std::string e = error_of(write("mm.csv", t));
+  EXPECT_NE(e.find("the shear displacement reaches 3, more than the box's length shear_box.length = 0.06 m"),
+            std::string::npos) << e;
+  EXPECT_NE(e.find("in m (mm / 1000)"), std::string::npos) << e;
 }
 
 TEST_F(MeasuredShearCurveTest, MissingFile) {
@@ -155,7 +166,7 @@ TEST_F(MeasuredShearCurveTest, UnevenSamplingInTheWindowIsAWarning) {
   const std::string csv =
       write("c.csv", "shear_displacement,shear_stress\n0.0015,1000\n0.0016,1000\n0.0017,1000\n0.003,1000\n");
   std::vector<std::string> warnings;
-  read_measured_shear_curve(csv, 25e3, kWindow, "spec.toml", "k", warnings);
+  read_measured_shear_curve(csv, 25e3, kWindow, "spec.toml", "k", warnings, kBoxLength);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("unevenly spaced"), std::string::npos) << warnings[0];
 }
