@@ -43,6 +43,8 @@ std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const 
   bool have_header = false;
   while (std::getline(in, line)) {
     ++line_number;
+    // A spreadsheet's "CSV UTF-8" starts with a byte-order mark, invisible in a message.
+    if (line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     if (!skipped(line)) {
       have_header = true;
       break;
@@ -55,7 +57,10 @@ std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const 
   for (const auto& c : columns) {
     const auto it = std::find(header.begin(), header.end(), c);
     if (it == header.end())
-      throw ConfigError(spec_file, key, csv + ": no column \"" + c + "\" in the header line \"" + line + "\"");
+      throw ConfigError(spec_file, key, csv + ": no column \"" + c + "\" in the header line \"" + line + "\"" +
+                                            (line.find(';') != std::string::npos && line.find(',') == std::string::npos
+                                                 ? " (columns must be separated by commas, not semicolons)"
+                                                 : ""));
     index.push_back(static_cast<std::size_t>(it - header.begin()));
   }
   std::vector<std::vector<double>> out(columns.size());

@@ -133,6 +133,16 @@ TEST_F(MeasuredShearCurveTest, MissingColumn) {
   EXPECT_NE(m.find("no column \"shear_displacement\""), std::string::npos) << m;
 }
 
+TEST_F(MeasuredShearCurveTest, ASpreadsheetsByteOrderMarkIsReadAndSemicolonsAreNamed) {
+  // "CSV UTF-8" from a spreadsheet starts with EF BB BF: read as if it were not there.
+  std::string t = "\xEF\xBB\xBFshear_displacement,shear_stress\n";
+  for (int k = 0; k <= 6; ++k) t += std::to_string(0.0005 * k) + "," + std::to_string(1000 + 100 * k) + "\n";
+  EXPECT_EQ(error_of(write("bom.csv", t)), "");
+  // A European spreadsheet's CSV separates by semicolons: the message says so.
+  const std::string m = error_of(write("semicolon.csv", "shear_displacement;shear_stress\n0;1000\n"));
+  EXPECT_NE(m.find("separated by commas, not semicolons"), std::string::npos) << m;
+}
+
 TEST_F(MeasuredShearCurveTest, NonNumericCellNamesLineAndColumn) {
   const std::string m = error_of(write("c.csv", "# comment\nshear_displacement,shear_stress\n0,0\n0.001,12x\n"));
   EXPECT_NE(m.find("c.csv: line 4: column \"shear_stress\" is \"12x\", not a finite number"), std::string::npos) << m;
