@@ -141,20 +141,25 @@ int main(int argc, char** argv) {
   opt.source = fs::absolute(opt.source);
   opt.workdir = fs::absolute(opt.workdir);
 
-  // A path to YADE that does not exist is a mistake, not a machine without YADE.
-  if (opt.yade.find('/') != std::string::npos && !fs::exists(opt.yade))
-    return usage(("--yade " + opt.yade + ": no such file").c_str());
-  if (!yade_available(opt.yade)) {
-    std::printf("crosscheck: SKIPPED: YADE is not installed ('%s' is not on PATH); install the Debian package yade\n",
-                opt.yade.c_str());
-    return kExitSkip;
-  }
+  // The tolerances are read first: a broken file is an error on a machine without YADE too
+  // (where every check is skipped), so CI without YADE still notices it.
   toml::table tol;
   try {
     tol = read_tolerances(opt.tolerances, opt.what, opt.size);
   } catch (const ToleranceError& e) {
     std::fprintf(stderr, "crosscheck: error: %s\n", e.what());
     return kExitUsage;
+  }
+  // A YADE the user named (a path, or another command than the default) that is not there
+  // is a mistake, not a machine without YADE.
+  if (opt.yade.find('/') != std::string::npos && !fs::exists(opt.yade))
+    return usage(("--yade " + opt.yade + ": no such file").c_str());
+  if (!yade_available(opt.yade)) {
+    if (opt.yade != kDefaultYade)
+      return usage(("--yade " + opt.yade + ": no such command on PATH").c_str());
+    std::printf("crosscheck: SKIPPED: YADE is not installed ('%s' is not on PATH); install the Debian package yade\n",
+                opt.yade.c_str());
+    return kExitSkip;
   }
   if (const std::string why = workdir_problem(opt.workdir); !why.empty()) {
     std::fprintf(stderr, "crosscheck: error: --workdir %s: %s\n", opt.workdir.string().c_str(), why.c_str());
