@@ -85,6 +85,7 @@ std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const 
     }
     line_numbers.push_back(line_number);
   }
+  if (line_numbers.empty()) throw ConfigError(spec_file, key, csv + ": the file has no rows after its header line");
   return out;
 }
 

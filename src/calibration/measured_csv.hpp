@@ -7,9 +7,9 @@
 
 namespace colza::calibration {
 
-// Returns the named columns, in the order asked for. Every problem (file missing, column
-// missing, a cell that is not a finite number) is a ConfigError naming the spec file, the
-// spec key that named the CSV, and the CSV's path and line.
+// Returns the named columns, in the order asked for (at least one row). Every problem (file
+// missing, column missing, no row after the header, a cell that is not a finite number) is a
+// ConfigError naming the spec file, the spec key that named the CSV, and the CSV's path and line.
 std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const std::vector<std::string>& columns,
                                                   const std::string& spec_file, const std::string& key);
 

@@ -132,13 +132,20 @@ std::string resolve(const std::string& spec_file, const std::string& value) {
   return p.lexically_normal().string();
 }
 
-// "" when the model config loads with `key` = `value` added to the spec's overrides, else
-// why not ("the model does not accept particle.density = -1200: must be positive, ...").
 // Least normal stress of a lab direct shear test (Pa); below it a load is taken for kPa.
 constexpr double kLeastLabNormalStress = 100.0;
 // Least tau / sigma at failure of a granular bulk: tan(1 deg).
 constexpr double kLeastStrengthRatio = 0.017;
 
+// Why a normal stress `sigma` (Pa) read from the spec or its data is taken for kPa, or "".
+std::string normal_stress_in_kpa(double sigma) {
+  if (sigma >= kLeastLabNormalStress) return "";
+  return "a normal stress of " + fmt(sigma) + " Pa, below " + fmt(kLeastLabNormalStress) +
+         " Pa: colza reads Pa (25.75 kPa is 25750); are these kPa?";
+}
+
+// "" when the model config loads with `key` = `value` added to the spec's overrides, else
+// why not ("the model does not accept particle.density = -1200: must be positive, ...").
 std::string model_rejects(const Spec& s, Scenario scenario, const std::string& key, double value) {
   // The value exactly as a run would be given it: rounded to 6 digits, a bound just past a
   // model limit (0.9990001 for a limit of 0.999) would pass here and be refused mid-calibration.
@@ -342,7 +349,6 @@ Spec read_spec(const std::string& path) {
       const auto cols = read_csv_columns(s.measured_file, {dcol, fcol}, path, "measured.curve", lines);
       require_increasing(cols[0], lines, dcol, s.measured_file, path, "measured.curve");
       const double fmin = s.base.oedometer.fit_force_min, fmax = s.base.oedometer.fit_force_max;
-      if (cols[0].empty()) m.fail("curve", s.measured_file + ": the curve has no rows after its header line");
       // Units (colza reads m and N): a piston cannot travel further than the sample is high,
       // and a curve whose largest force is under 1 % of the fit range's top is in kN or a
       // lever's units, not one to shorten the fit range for.
@@ -451,9 +457,7 @@ Spec read_spec(const std::string& path) {
     // below tan(1 deg) = 0.017. A column in kPa beside one in Pa breaks one or the other;
     // refused here, before any design run is spent on loads of 26 Pa.
     for (std::size_t k = 0; k < sigma.size(); ++k) {
-      if (sigma[k] < kLeastLabNormalStress)
-        m.fail(source_key, "a normal stress of " + fmt(sigma[k]) + " Pa, below " + fmt(kLeastLabNormalStress) +
-                               " Pa: colza reads Pa (25.75 kPa is 25750); are these kPa?");
+      if (const std::string why = normal_stress_in_kpa(sigma[k]); !why.empty()) m.fail(source_key, why);
       if (tau[k] / sigma[k] < kLeastStrengthRatio)
         m.fail(source_key, "a shear strength of " + fmt(tau[k]) + " Pa at a normal stress of " + fmt(sigma[k]) +
                                " Pa, tau / sigma = " + fmt(tau[k] / sigma[k]) + " < " + fmt(kLeastStrengthRatio) +
@@ -474,9 +478,7 @@ Spec read_spec(const std::string& path) {
       m.fail("loads", "needs two or more distinct normal stresses (Pa)");
     for (double l : s.loads) {
       if (!(l > 0.0)) m.fail("loads", "normal stresses must be > 0 (Pa)");
-      if (l < kLeastLabNormalStress)
-        m.fail("loads", "a normal stress of " + fmt(l) + " Pa, below " + fmt(kLeastLabNormalStress) +
-                            " Pa: colza reads Pa (25.75 kPa is 25750); are these kPa?");
+      if (const std::string why = normal_stress_in_kpa(l); !why.empty()) m.fail("loads", why);
     }
     if (const std::string clash = loads_sharing_a_label(s.loads); !clash.empty()) m.fail("loads", clash);
     // The measured C and tan(Phi) come from one line through the measured strengths: unless
