@@ -2,39 +2,17 @@
 
 #include <algorithm>
 #include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
-#include <sys/wait.h>
 #include <thread>
+#include "child_process.hpp"
 #include "run_stamp.hpp"
 
 namespace crosscheck {
 
 namespace {
-
-// Ctrl-C. std::system ignores SIGINT in this process while any command runs (glibc counts the
-// calls in progress), so crosscheck learns of a Ctrl-C from a command stopped by it (killed by
-// SIGINT, or a shell's or colza's exit code 128 + SIGINT), sets `interrupted`, and raises
-// SIGINT itself once no command is running: at once for a single run, after the workers have
-// joined for run_in_parallel (whose workers start no job once it is set). A YADE run notices
-// Ctrl-C only when its O.run() returns, so it may finish its loading first.
-std::atomic<bool> interrupted{false};
-std::atomic<int> parallel_sections{0};
-
-// Runs a shell command with its output to `log`; returns its exit status (-1 if it did not
-// exit normally).
-int run_logged(const std::string& command, const fs::path& log) {
-  const std::string full = command + " > " + quote(log.string()) + " 2>&1 < /dev/null";
-  const int raw = std::system(full.c_str());
-  if (raw != -1 && ((WIFSIGNALED(raw) && WTERMSIG(raw) == SIGINT) || (WIFEXITED(raw) && WEXITSTATUS(raw) == 128 + SIGINT))) {
-    interrupted = true;
-    if (parallel_sections == 0) std::raise(SIGINT);
-  }
-  return (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
-}
 
 // Whether `out` may be removed before a run writes there: it holds what a run of crosscheck
 // wrote (a summary.json, or the log beside it), or nothing. A user's folder of that name is not.
@@ -110,7 +88,8 @@ bool CodeRuns::run(const std::string& code, const std::string& command, const fs
                  ec.message().c_str());
     return false;
   }
-  const int status = run_logged(command, log);
+  const int status = run_shell_command(command, log);
+  if (stop_requested()) return false;  // stopped by crosscheck's stop signal: no failure to report
   if (status != 0) {
     std::fprintf(stderr, "crosscheck: %s failed (exit %d): %s\n%s", code.c_str(), status, command.c_str(),
                  tail_of(log).c_str());
@@ -177,20 +156,24 @@ std::vector<bool> run_in_parallel(const std::vector<std::function<bool()>>& jobs
   std::vector<char> ok(jobs.size(), 0);
   std::atomic<std::size_t> next{0};
   const unsigned workers = static_cast<unsigned>(std::min<std::size_t>(kParallelRuns, jobs.size()));
-  std::vector<std::thread> pool;
-  ++parallel_sections;
-  for (unsigned w = 0; w < workers; ++w)
-    pool.emplace_back([&] {
-      for (std::size_t j = next++; j < jobs.size() && !interrupted; j = next++) {
-        try {
-          ok[j] = jobs[j]() ? 1 : 0;
-        } catch (const std::exception& e) {
-          std::fprintf(stderr, "crosscheck: a run failed: %s\n", e.what());
+  {
+    // After a stop signal no job starts; the workers' runs in progress are stopped
+    // (child_process.hpp), and crosscheck ends once they have joined.
+    const ParallelSection section;
+    std::vector<std::thread> pool;
+    for (unsigned w = 0; w < workers; ++w)
+      pool.emplace_back([&] {
+        for (std::size_t j = next++; j < jobs.size() && !stop_requested(); j = next++) {
+          try {
+            ok[j] = jobs[j]() ? 1 : 0;
+          } catch (const std::exception& e) {
+            std::fprintf(stderr, "crosscheck: a run failed: %s\n", e.what());
+          }
         }
-      }
-    });
-  for (auto& t : pool) t.join();
-  if (--parallel_sections == 0 && interrupted) std::raise(SIGINT);
+      });
+    for (auto& t : pool) t.join();
+  }
+  end_if_stop_requested();
   return {ok.begin(), ok.end()};
 }
 

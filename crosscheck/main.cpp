@@ -32,6 +32,9 @@
 // two of the four full-size loads when the others are not finished (C and Phi are then those
 // of the line through the given loads; the table says so).
 //
+// Ctrl-C, SIGTERM or SIGHUP to crosscheck stops the runs in progress (SIGTERM to each run's
+// process group, child_process.hpp) and then crosscheck, by that signal.
+//
 // Prints a table (metric, colza, YADE, difference, tolerance, PASS/FAIL) and both codes'
 // speed. Exit code: 0 all passed, 1 something failed (a run that fails is a FAIL row), 2 bad
 // usage, a tolerances file that cannot be read or has a key of a wrong name, type or range
@@ -51,6 +54,7 @@
 #include <unistd.h>
 
 #include "checks.hpp"
+#include "child_process.hpp"
 #include "code_runs.hpp"
 #include "options.hpp"
 #include "report.hpp"
@@ -169,6 +173,7 @@ int main(int argc, char** argv) {
               opt.colza.string().c_str(), opt.yade.c_str(), opt.workdir.string().c_str());
   std::fflush(stdout);
 
+  forward_stop_signals();  // Ctrl-C or SIGTERM stops the runs in progress too (child_process.hpp)
   const CodeRuns runs(opt);
   SpeedTally speed;
   const CheckContext ctx{opt, tol, runs, speed};
