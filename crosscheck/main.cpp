@@ -37,8 +37,10 @@
 //
 // Prints a table (metric, colza, YADE, difference, tolerance, PASS/FAIL) and both codes'
 // speed. Exit code: 0 all passed, 1 something failed (a run that fails is a FAIL row), 2 bad
-// usage, a tolerances file that cannot be read or has a key of a wrong name, type or range
-// (tolerances.hpp), or a --workdir that cannot be made or written; 77 YADE is not installed
+// usage (--loads with two loads the same to the pascal, a --colza that is not executable), a
+// tolerances file that cannot be read, has a key of a wrong name, type or range, or names a
+// config or scene that is not in the source tree (tolerances.hpp), or a --workdir that cannot
+// be made or written; 77 YADE is not installed
 // (CTest SKIP_RETURN_CODE).
 //
 // This file reads the command line and runs the checks; the comparisons are in
@@ -124,6 +126,7 @@ int main(int argc, char** argv) {
           opt.loads.push_back(v);
         }
         if (opt.loads.empty()) throw std::invalid_argument("--loads needs at least one normal stress (Pa)");
+        if (const std::string why = loads_sharing_a_run(opt.loads); !why.empty()) throw std::invalid_argument("--loads: " + why);
       }
       else if (a == "-h" || a == "--help") return usage(nullptr), 0;
       else if (!a.empty() && a[0] == '-') return usage(("unknown option " + a).c_str());
@@ -139,6 +142,8 @@ int main(int argc, char** argv) {
   if (opt.source.empty() || !fs::exists(opt.source / "yade-scripts" / "run_scene.py"))
     return usage("cannot find the colza source tree (yade-scripts/); give --source");
   if (opt.colza.empty() || !fs::exists(opt.colza)) return usage("cannot find the colza executable; give --colza");
+  if (!fs::is_regular_file(opt.colza) || access(opt.colza.c_str(), X_OK) != 0)
+    return usage(("--colza " + opt.colza.string() + ": not an executable file").c_str());
   if (opt.tolerances.empty()) opt.tolerances = opt.source / "data" / "crosscheck-tolerances.toml";
   if (opt.workdir.empty()) opt.workdir = fs::current_path() / "crosscheck-work";
   opt.colza = fs::absolute(opt.colza);
@@ -149,7 +154,7 @@ int main(int argc, char** argv) {
   // (where every check is skipped), so CI without YADE still notices it.
   toml::table tol;
   try {
-    tol = read_tolerances(opt.tolerances, opt.what, opt.size);
+    tol = read_tolerances(opt.tolerances, opt.what, opt.size, opt.source);
   } catch (const ToleranceError& e) {
     std::fprintf(stderr, "crosscheck: error: %s\n", e.what());
     return kExitUsage;

@@ -57,14 +57,7 @@ std::vector<double> loads_to_run(const CheckContext& ctx, const ShearSetting& s,
     for (const auto& n : *a) loads.push_back(n.value<double>().value_or(0.0));
   }
   if (loads.empty()) report.fail(s.label, "no loads in [" + s.base + "]");
-  // Two loads with one run folder name (equal to the pascal) would share their runs.
-  for (std::size_t a = 0; a < loads.size(); ++a)
-    for (std::size_t b = a + 1; b < loads.size(); ++b)
-      if (load_run_name(loads[a], 0) == load_run_name(loads[b], 0)) {
-        report.fail(s.label, "loads " + fmt(loads[a], "%.17g") + " and " + fmt(loads[b], "%.17g") +
-                                 " Pa share the run folder " + load_run_name(loads[a], 0));
-        return {};
-      }
+  // No two share a run folder: main refuses such --loads, read_tolerances such a table.
   return loads;
 }
 

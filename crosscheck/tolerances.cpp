@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <set>
+#include <tuple>
 #include <vector>
 
 namespace crosscheck {
@@ -61,6 +63,14 @@ struct Checker {
       if (!t.contains(r)) fail(base + "." + r, "missing");
   }
 
+  // A path key (relative to the source tree) must name a file that is there: a misspelt
+  // path would otherwise be a FAIL row after the other runs, not bad usage.
+  void existing_file(const std::string& key, const fs::path& source, const std::string& relative) const {
+    std::error_code ec;
+    if (!fs::is_regular_file(source / relative, ec))
+      fail(key, "names " + (source / relative).string() + ", which is not a file");
+  }
+
   const toml::table& section(const toml::table& doc, const std::string& path, bool required) const {
     static const toml::table kEmpty;
     const toml::node_view<const toml::node> n = doc.at_path(path);
@@ -87,7 +97,25 @@ std::map<std::string, Kind> with_ensemble(std::map<std::string, Kind> keys) {
 
 }  // namespace
 
-toml::table read_tolerances(const fs::path& file, const std::string& command, const std::string& size) {
+std::string loads_sharing_a_run(const std::vector<double>& loads) {
+  const auto to_the_pascal = [](double sigma) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.0f", sigma);  // as load_run_name writes it
+    return std::string(text);
+  };
+  for (std::size_t a = 0; a < loads.size(); ++a)
+    for (std::size_t b = a + 1; b < loads.size(); ++b)
+      if (to_the_pascal(loads[a]) == to_the_pascal(loads[b])) {
+        char text[160];
+        std::snprintf(text, sizeof text, "loads %.15g and %.15g Pa are the same to the pascal (they would share runs)",
+                      loads[a], loads[b]);
+        return text;
+      }
+  return "";
+}
+
+toml::table read_tolerances(const fs::path& file, const std::string& command, const std::string& size,
+                            const fs::path& source) {
   const Checker c{file.string()};
   std::error_code ec;
   const fs::file_status status = fs::status(file, ec);
@@ -139,6 +167,9 @@ toml::table read_tolerances(const fs::path& file, const std::string& command, co
   if (command == "micro" || all) {
     const toml::table& scenes = c.section(doc, "micro.scenes", true);
     if (scenes.empty()) c.fail("micro.scenes", "names no scene");
+    for (const auto& [scene, v] : scenes)
+      c.existing_file("micro.scenes." + std::string(scene.str()), source,
+                      "crosscheck/scenes/" + std::string(scene.str()) + ".toml");
   }
 
   // [oedometer.SIZE], [shear.SIZE]
@@ -175,8 +206,18 @@ toml::table read_tolerances(const fs::path& file, const std::string& command, co
       c.fail(o + ".travels", "missing: with ensemble_realisations = " + std::to_string(realisations) +
                                  " the ensemble compares the mean forces at these travels, and without them it "
                                  "would judge nothing");
-    c.table(h, c.section(doc, h, wanted_shear), shear, wanted_shear ? std::set<std::string>{"config"}
-                                                                    : std::set<std::string>{});
+    const toml::table& shear_size = c.section(doc, h, wanted_shear);
+    c.table(h, shear_size, shear, wanted_shear ? std::set<std::string>{"config", "loads"} : std::set<std::string>{});
+    if (const toml::array* loads = shear_size["loads"].as_array()) {
+      std::vector<double> values;
+      for (const auto& n : *loads) values.push_back(n.value<double>().value_or(0.0));
+      if (const std::string why = loads_sharing_a_run(values); !why.empty()) c.fail(h + ".loads", why);
+    }
+    for (const auto& [section, wanted, key] : {std::tuple{&oedometer_size, wanted_oedometer, "config"},
+                                               std::tuple{&oedometer_size, wanted_oedometer && s == "full", "settle_config"},
+                                               std::tuple{&shear_size, wanted_shear, "config"}})
+      if (const auto path = (*section)[key].value<std::string>(); wanted && path)
+        c.existing_file((section == &shear_size ? h : o) + "." + key, source, *path);
   }
   return doc;
 }

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <toml++/toml.h>
+#include <vector>
 
 namespace crosscheck {
 
@@ -16,20 +17,27 @@ class ToleranceError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// "" if no two of `loads` (Pa) round to the same pascal, else what is wrong with which two:
+// such loads would share a run folder (load_run_name, shear_setting.hpp) and their runs.
+std::string loads_sharing_a_run(const std::vector<double>& loads);
+
 // Parses `file` and checks every key against the schema below; `command` (micro, oedometer,
-// shear, all) and `size` (small, full) say which sections must be there. Throws
-// ToleranceError.
+// shear, all) and `size` (small, full) say which sections must be there, and the files the
+// command's sections name (config, settle_config, crosscheck/scenes/<scene>.toml) must be
+// in the source tree `source`. Throws ToleranceError.
 //   [micro]            relative, contacts (numbers >= 0); [micro.floor] position, velocity,
 //                      angular_velocity, force, torque (>= 0); [micro.scenes] name = relative
 //                      tolerance (>= 0), at least one
 //   [oedometer.SIZE]   config (required), settle_config (strings); early_rows (integer >= 1);
 //                      early_relative, rms_relative, force_at_relative (>= 0); travels
 //                      (numbers > 0; required with ensemble_realisations >= 2); ensemble keys
-//   [shear.SIZE]       config (required); loads (numbers > 0); shear_displacement,
+//   [shear.SIZE]       config, loads (required; numbers > 0, no two the same to the pascal);
+//                      shear_displacement,
 //                      strength_window_end (> 0), strength_window_start (>= 0); early_steps, and the
 //                      relative and absolute tolerances (>= 0); ensemble keys
 //   ensemble keys      ensemble_realisations (integer >= 1), ensemble_perturbation (>= 0),
 //                      ensemble_alpha (in (0, 1))
-toml::table read_tolerances(const std::filesystem::path& file, const std::string& command, const std::string& size);
+toml::table read_tolerances(const std::filesystem::path& file, const std::string& command, const std::string& size,
+                            const std::filesystem::path& source);
 
 }  // namespace crosscheck
