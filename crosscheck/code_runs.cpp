@@ -47,6 +47,11 @@ bool yade_available(const std::string& yade) {
 
 bool CodeRuns::reused(const fs::path& out, const std::string& stamp, Reuse reuse) const {
   if ((reuse == Reuse::kIfAsked && !opt_.reuse) || !fs::exists(out / "summary.json")) return false;
+  if (const std::string damage = damaged_result(out); !damage.empty()) {
+    std::printf("crosscheck: not reusing %s: %s since the run; running it again\n", out.string().c_str(),
+                damage.c_str());
+    return false;
+  }
   const std::optional<std::string> before = read_stamp(out);
   if (!before) {  // a load run by hand, or by a crosscheck before the stamps
     if (reuse == Reuse::kIfSameInputs) {

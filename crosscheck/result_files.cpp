@@ -25,19 +25,33 @@ Csv read_csv(const fs::path& file) {
   Csv csv;
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error(file.string() + " is empty");
+  if (!line.empty() && line.back() == '\r') line.pop_back();
   {
     std::stringstream s(line);
     std::string name;
     while (std::getline(s, name, ',')) csv.names.push_back(name);
   }
   csv.columns.resize(csv.names.size());
+  std::size_t line_number = 1;
   while (std::getline(in, line)) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty()) continue;
     std::stringstream s(line);
     std::string cell;
     std::size_t k = 0;
-    while (std::getline(s, cell, ',') && k < csv.columns.size()) csv.columns[k++].push_back(std::strtod(cell.c_str(), nullptr));
-    if (k != csv.columns.size()) throw std::runtime_error(file.string() + ": short row");
+    while (std::getline(s, cell, ',') && k < csv.columns.size()) {
+      // The whole cell must be a number (nan and inf included: the comparisons fail on
+      // them); strtod alone read "garbage5e-07" as 0.
+      char* end = nullptr;
+      const double value = std::strtod(cell.c_str(), &end);
+      while (end && (*end == ' ' || *end == '\t')) ++end;
+      if (end == cell.c_str() || *end != '\0')
+        throw std::runtime_error(file.string() + ": line " + std::to_string(line_number) + ", column " +
+                                 csv.names[k] + ": '" + cell + "' is not a number");
+      csv.columns[k++].push_back(value);
+    }
+    if (k != csv.columns.size()) throw std::runtime_error(file.string() + ": line " + std::to_string(line_number) + ": short row");
   }
   return csv;
 }

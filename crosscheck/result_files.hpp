@@ -20,7 +20,8 @@ struct Csv {
   const std::vector<double>& at(const std::string& name) const;      // throws if absent
 };
 
-// Throws std::runtime_error if the file cannot be read, is empty or has a short row.
+// Throws std::runtime_error if the file cannot be read, is empty, has a short row or a cell
+// that is not wholly a number (nan and inf are numbers; blank lines and a final \r are skipped).
 Csv read_csv(const fs::path& file);
 
 // The whole file as text; throws std::runtime_error naming it if it cannot be read.

@@ -1,5 +1,6 @@
 #include "run_stamp.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
@@ -109,29 +110,78 @@ fs::path stamp_file(const fs::path& out) { return out.string() + ".inputs"; }
 namespace {
 
 // The stamp's last lines: the fingerprints of the results it vouches for, the run's
-// summary.json (written last by both codes; throws if there is none) and, when the run wrote
-// one, its packing.txt (what a kept sample is kept for).
+// summary.json first (written last by both codes; throws if there is none), then every other
+// file of the run folder in name order (the curves and series the checks read, the packing a
+// kept sample is kept for).
 std::string result_lines(const fs::path& out) {
-  std::string lines;
-  for (const fs::path& result : {out / "summary.json", out / "packing.txt"})
-    if (lines.empty() || names_a_file(result))
-      lines += "result " + result.string() + " " + file_fingerprint(result) + "\n";
+  const fs::path summary = out / "summary.json";
+  std::string lines = "result " + summary.string() + " " + file_fingerprint(summary) + "\n";
+  std::vector<fs::path> others;
+  for (const auto& entry : fs::recursive_directory_iterator(out))
+    if (entry.is_regular_file() && entry.path() != summary) others.push_back(entry.path());
+  std::sort(others.begin(), others.end());
+  for (const fs::path& result : others) lines += "result " + result.string() + " " + file_fingerprint(result) + "\n";
   return lines;
+}
+
+struct ResultLine {
+  fs::path file;
+  std::string fingerprint;
+};
+
+// A stamp split into its inputs part and its result lines; nothing if there is no stamp, or
+// its first result is not out/summary.json.
+struct ParsedStamp {
+  std::string inputs;
+  std::vector<ResultLine> results;
+};
+std::optional<ParsedStamp> parse_stamp(const fs::path& out) {
+  std::string text;
+  try {
+    text = read_text(stamp_file(out));
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  ParsedStamp parsed;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("result ", 0) != 0) {
+      if (!parsed.results.empty()) return std::nullopt;  // inputs after results: not a stamp crosscheck wrote
+      parsed.inputs += line + "\n";
+      continue;
+    }
+    const std::size_t last_space = line.rfind(' ');
+    parsed.results.push_back({line.substr(7, last_space - 7), line.substr(last_space + 1)});
+  }
+  if (parsed.results.empty() || parsed.results.front().file != out / "summary.json") return std::nullopt;
+  return parsed;
+}
+
+// Why `result` no longer is what the stamp vouched for ("" if it is).
+std::string result_change(const ResultLine& result) {
+  if (!names_a_file(result.file)) return result.file.string() + " is missing";
+  try {
+    if (file_fingerprint(result.file) != result.fingerprint) return result.file.string() + " has changed";
+  } catch (const std::exception&) {
+    return result.file.string() + " cannot be read";
+  }
+  return "";
 }
 
 }  // namespace
 
 std::optional<std::string> read_stamp(const fs::path& out) {
-  try {
-    std::string stamp = read_text(stamp_file(out));
-    const std::string results = result_lines(out);
-    if (stamp.size() < results.size() || stamp.compare(stamp.size() - results.size(), results.size(), results) != 0)
-      return std::nullopt;  // other results than those the stamp was written with
-    stamp.resize(stamp.size() - results.size());
-    return stamp;
-  } catch (const std::exception&) {
-    return std::nullopt;  // no stamp, or no summary.json
-  }
+  const std::optional<ParsedStamp> parsed = parse_stamp(out);
+  if (!parsed || !result_change(parsed->results.front()).empty()) return std::nullopt;
+  return parsed->inputs;
+}
+
+std::string damaged_result(const fs::path& out) {
+  const std::optional<ParsedStamp> parsed = parse_stamp(out);
+  if (!parsed || !result_change(parsed->results.front()).empty()) return "";  // another run's summary.json
+  for (std::size_t k = 1; k < parsed->results.size(); ++k)
+    if (std::string why = result_change(parsed->results[k]); !why.empty()) return why;
+  return "";
 }
 
 void write_stamp(const fs::path& out, const std::string& stamp) {

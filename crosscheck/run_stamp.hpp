@@ -7,8 +7,9 @@
 //   input <file> <fingerprint>     the config, every existing file one of its strings names
 //                                  (relative to the config's folder: a packing_file), and
 //                                  every existing file an argument names
-//   result <summary.json> <fingerprint>   the results the stamp vouches for, and
-//   result <packing.txt> <fingerprint>    the packing, when the run wrote one
+//   result <summary.json> <fingerprint>   the results the stamp vouches for: summary.json,
+//   result <file> <fingerprint>           then every other file of the run folder (curves,
+//                                         series, the packing), in name order
 // A fingerprint is FNV-1a 64 of the file's bytes (16 hex digits); paths are absolute. Two
 // runs have the same inputs when every line but the last is equal: the same command on
 // byte-identical configs, packings and programs. Nothing else a run reads (the system's
@@ -36,13 +37,18 @@ std::string run_stamp(const std::string& command, const std::vector<fs::path>& p
 fs::path stamp_file(const fs::path& out);
 
 // The inputs part of the stamp of the run in `out`; nothing if there is no stamp, or its
-// result lines do not match out/summary.json and out/packing.txt (results written after it,
-// e.g. by a run made by hand into the folder, or a kept sample that lost its packing).
+// summary.json line does not match out/summary.json (results written after it, e.g. by a run
+// made by hand into the folder).
 std::optional<std::string> read_stamp(const fs::path& out);
 
-// Writes `stamp` and the result lines of out/summary.json (and out/packing.txt) to the stamp file of `out` through
-// a temporary name and a rename, so a stamp is whole or absent. Throws std::runtime_error if
-// it cannot be written or summary.json cannot be read.
+// When the stamp matches out/summary.json but another result it lists is missing, changed or
+// unreadable (an emptied curve.csv, a kept sample that lost its packing): which and how, e.g.
+// "<out>/curve.csv is missing". "" otherwise. Such a run is made again, never reused.
+std::string damaged_result(const fs::path& out);
+
+// Writes `stamp` and the result lines of the files in `out` (summary.json first) to the stamp
+// file of `out` through a temporary name and a rename, so a stamp is whole or absent. Throws
+// std::runtime_error if it cannot be written or summary.json cannot be read.
 void write_stamp(const fs::path& out, const std::string& stamp);
 
 // The first line of `now` that `before` lacks (what changed), for the message that says why

@@ -25,7 +25,7 @@ using crosscheck::read_stamp;
 using crosscheck::run_stamp;
 using crosscheck::stamp_file;
 
-// A fake colza: writes <--out>/summary.json and packing.txt and a line to calls.txt beside
+// A fake colza: writes <--out>/summary.json, packing.txt and curve.csv and a line to calls.txt beside
 // itself; exits 1 when fail.flag exists beside it.
 fs::path write_fake_colza(const colza::testing::ScratchDir& dir) {
   const fs::path exe = dir / "fake-colza";
@@ -36,6 +36,7 @@ fs::path write_fake_colza(const colza::testing::ScratchDir& dir) {
                         "while [ $# -gt 0 ]; do\n"
                         "  if [ \"$1\" = --out ]; then\n"
                         "    mkdir -p \"$2\" && echo '{}' > \"$2/summary.json\" && echo '0 0 0 1' > \"$2/packing.txt\"\n"
+                        "    echo 'step,force' > \"$2/curve.csv\" && echo '0,1' >> \"$2/curve.csv\"\n"
                         "  fi\n"
                         "  shift\n"
                         "done\n";
@@ -171,6 +172,42 @@ TEST(CrosscheckRunStamp, ReuseTakesOnlyARunOfTheSameInputs) {
   EXPECT_FALSE(read_stamp(out_2).has_value());
   EXPECT_TRUE(runs.run_colza("oedometer", config, out_2));
   EXPECT_EQ(calls(dir), 8);
+}
+
+// A result the stamp vouched for that is missing, emptied or changed while summary.json is the
+// run's own: the run is made again under --reuse. Before, the stamp covered summary.json (and
+// packing.txt) only, so the check then failed on the damaged file instead of running again.
+TEST(CrosscheckRunStamp, ReuseRunsAgainWhenAResultIsDamaged) {
+  colza::testing::ScratchDir dir;
+  Options opt;
+  opt.colza = write_fake_colza(dir);
+  opt.reuse = true;
+  const CodeRuns runs(opt);
+  const fs::path config = dir.write("run.toml", "[oedometer]\nlabel = \"x\"\n");
+  const fs::path out = dir / "work" / "colza";
+  ASSERT_TRUE(runs.run_colza("oedometer", config, out));
+  EXPECT_EQ(crosscheck::damaged_result(out), "");
+  ASSERT_TRUE(runs.run_colza("oedometer", config, out));
+  EXPECT_EQ(calls(dir), 1);  // reused
+
+  std::ofstream(out / "curve.csv", std::ios::trunc).flush();  // emptied
+  EXPECT_EQ(crosscheck::damaged_result(out), (out / "curve.csv").string() + " has changed");
+  ASSERT_TRUE(runs.run_colza("oedometer", config, out));
+  EXPECT_EQ(calls(dir), 2);  // run again
+  EXPECT_EQ(crosscheck::damaged_result(out), "");
+
+  fs::remove(out / "curve.csv");
+  EXPECT_EQ(crosscheck::damaged_result(out), (out / "curve.csv").string() + " is missing");
+  ASSERT_TRUE(runs.run_colza("oedometer", config, out));
+  EXPECT_EQ(calls(dir), 3);
+
+  // Another run's summary.json (a load run by hand into the folder): not damage; the stamp
+  // does not vouch for that run, which --reuse takes with a notice, as before.
+  std::ofstream(out / "summary.json") << "{\"by\": \"hand\"}\n";
+  fs::remove(out / "curve.csv");
+  EXPECT_EQ(crosscheck::damaged_result(out), "");
+  ASSERT_TRUE(runs.run_colza("oedometer", config, out));
+  EXPECT_EQ(calls(dir), 3);
 }
 
 TEST(CrosscheckRunStamp, WithoutReuseOnlyAKeptProductStands) {
