@@ -1,5 +1,7 @@
 #include "cli/calibrate_command.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -94,6 +96,33 @@ std::vector<std::string> warnings_about_runs(const DemModel& dem, const fs::path
   return w;
 }
 
+// Whether `out` holds a calibration that was stopped, to be resumed: a folder runs/ whose
+// entries are all design runs (folders named by a run's 16-hex-digit fingerprint, or
+// sample-<fingerprint>) or staging folders, and not empty unless `out` holds nothing else.
+// A folder named runs of the user's is not one: resuming there would replace a report.md
+// beside it without --force.
+bool holds_a_stopped_calibration(const fs::path& out) {
+  const auto is_fingerprint = [](const std::string& s) {
+    return s.size() == 16 && std::all_of(s.begin(), s.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); });
+  };
+  std::error_code ec;
+  const fs::path runs = out / "runs";
+  if (!fs::is_directory(runs, ec)) return false;
+  bool any_run = false;
+  for (fs::directory_iterator it(runs, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (is_staging_folder(it->path())) continue;
+    const bool design_run = is_fingerprint(name) || (name.rfind("sample-", 0) == 0 && is_fingerprint(name.substr(7)));
+    if (!design_run || !fs::is_directory(it->path(), ec)) return false;
+    any_run = true;
+  }
+  if (ec) return false;
+  if (any_run) return true;
+  for (fs::directory_iterator it(out, ec), end; !ec && it != end; it.increment(ec))
+    if (it->path().filename() != "runs" && !is_staging_folder(it->path())) return false;
+  return !ec;
+}
+
 // Where the design runs live: --runs, or DIR/runs.
 fs::path runs_folder(const CalibrateOptions& opt) {
   return opt.runs_dir.empty() ? fs::path(opt.out_dir) / "runs" : fs::absolute(opt.runs_dir);
@@ -152,7 +181,8 @@ int calibrate_command(const CalibrateOptions& opt) {
           throw ConfigError(opt.spec_path, "stage", "the spec is for stage \"" + std::string(to_string(spec.stage)) +
                                                         "\", the command asked for \"" + opt.stage + "\"");
         validate_problem(spec.problem, opt.mode == "sequential");
-        check_output_dir(opt.out_dir, opt.force, "runs");  // runs/: a stopped calibration, resumed
+        check_output_dir(opt.out_dir, opt.force,  // a stopped calibration is resumed
+                         holds_a_stopped_calibration(opt.out_dir) ? "runs" : "");
         make_output_folders(opt.out_dir, runs_folder(opt), !opt.runs_dir.empty());
       }))
     return code;

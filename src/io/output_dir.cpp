@@ -23,8 +23,6 @@ namespace {
 // Staging folders are named .colza-partial-<host>-<pid> (staging_prefix).
 constexpr const char* kStagingPrefix = ".colza-partial-";
 
-bool is_staging_folder(const fs::path& entry) { return entry.filename().string().rfind(kStagingPrefix, 0) == 0; }
-
 // Whether `file` is a JSON object colza wrote with one of `keys` (its own summary.json or
 // sample.json), read without throwing.
 bool written_by_colza(const fs::path& file, std::initializer_list<const char*> keys) {
@@ -52,6 +50,8 @@ constexpr const char* kRunFiles[] = {"summary.json", "sample.json", "packing.txt
                                      "result.h5"};
 
 }  // namespace
+
+bool is_staging_folder(const fs::path& entry) { return entry.filename().string().rfind(kStagingPrefix, 0) == 0; }
 
 void check_output_dir(const fs::path& dir, bool overwrite, const std::string& unfinished_marker) {
   const std::string name = "--out " + dir.string();

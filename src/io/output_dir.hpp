@@ -46,6 +46,10 @@ void write_atomically(const std::filesystem::path& file, const std::function<voi
 // write_atomically with `text` as the contents.
 void write_text_atomically(const std::filesystem::path& file, const std::string& text);
 
+// Whether `entry` is a staging folder (.colza-partial-<host>-<pid>) of a run in progress or
+// of one killed before it finished.
+bool is_staging_folder(const std::filesystem::path& entry);
+
 // Checks the output directory without creating anything (for early validation). Unless
 // `overwrite` (--force), a directory that holds a summary.json, or any file but staging
 // folders, is refused; one that holds `unfinished_marker` (e.g. a series' sample.json) is

@@ -146,6 +146,14 @@ TEST_F(CalibrateCompression, PaperProcedureRecoversKnAndSaysWhatItCannotTell) {
   // Without --force a finished calibration is not replaced.
   EXPECT_EQ(run_colza("calibrate compression --quiet --spec " + (dir_ / "spec.toml").string() + " --out " + out.string())
                 .exit_code, 2);
+  // A stopped one (its runs/ holds design runs and no summary.json yet) is resumed without
+  // --force, its finished runs reused.
+  fs::remove(out / "summary.json");
+  fs::remove(out / "report.md");
+  const CliResult resumed =
+      run_colza("calibrate compression --quiet --spec " + (dir_ / "spec.toml").string() + " --out " + out.string());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.stderr_text;
+  EXPECT_EQ(read_json(out / "summary.json")["runs_reused"].get<int>(), 6);
 }
 
 TEST_F(CalibrateCompression, SequentialModeRecoversKnAndSaysWhatItCannotTell) {
@@ -423,8 +431,21 @@ TEST_F(CalibrateCompression, BadSpecValuesAndOutputFoldersAreRefusedBeforeAnyRun
   r = run_colza("calibrate compression --quiet --spec " + (dir_ / "spec.toml").string() + " --out " +
                 (dir_ / "out-runs-named").string());
   EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
-  EXPECT_NE(r.stderr_text.find("holds a file named runs"), std::string::npos) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("holds files (runs, ...) but no colza result"), std::string::npos) << r.stderr_text;
   EXPECT_EQ(read_file(dir_ / "out-runs-named" / "runs"), "mine\n");
+  // A folder named runs of the user's is not a stopped calibration to resume: its report.md
+  // beside it was replaced without --force. Refused, and both kept; so is an empty runs/
+  // beside other files. (A stopped calibration's runs/ holds only design run folders.)
+  for (const std::string& held : {std::string("notes.txt"), std::string()}) {
+    const fs::path out = dir_ / ("out-user-runs" + held);
+    fs::create_directories(out / "runs");
+    if (!held.empty()) write_file(out / "runs" / held, "mine\n");
+    write_file(out / "report.md", "my report\n");
+    r = run_colza("calibrate compression --quiet --spec " + (dir_ / "spec.toml").string() + " --out " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << held << ": " << r.stderr_text;
+    EXPECT_NE(r.stderr_text.find("but no colza result"), std::string::npos) << r.stderr_text;
+    EXPECT_EQ(read_file(out / "report.md"), "my report\n");
+  }
 }
 
 TEST(CalibrateDensity, BothModesRunTheLoopOnASmallSample) {
