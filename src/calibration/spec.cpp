@@ -251,6 +251,15 @@ Spec read_spec(const std::string& path) {
       }
     if (refused == values.size()) n.fail("key", first_reason);
     if (refused > 0) n.fail(first_key, first_reason);
+    // The fit and the sequential refinement give a parameter any value between its bounds,
+    // so the model must take one that is not a whole number too: a key of whole numbers
+    // (sample.count) passed the checks above and failed after the design runs. The value is
+    // the range's golden section, a whole number for no practical bounds.
+    const double between = par.lower + (par.upper - par.lower) * 0.3819660112501051;
+    if (const std::string why = model_rejects(s, scenario, par.key, between); !why.empty())
+      n.fail("key", why + "; a calibrated parameter takes any value in [" + fmt(par.lower) + ", " + fmt(par.upper) +
+                        "] (the fit's solution, the sequential refinement), so " + par.key +
+                        " cannot be one");
     if (!columns.empty() && d.size() != columns[0].size())
       n.fail("design", "has " + std::to_string(d.size()) + " values, parameters[0].design has " +
                            std::to_string(columns[0].size()) + ": every parameter needs one value per design point");

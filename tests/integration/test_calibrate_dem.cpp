@@ -387,6 +387,12 @@ TEST_F(CalibrateCompression, BadSpecValuesAndOutputFoldersAreRefusedBeforeAnyRun
   bad.replace(bad.find("[350e3, 450e3, 450e3, 450e3, 550e3]"), 35, "[350e3, 450e3, 450e3, 450e3, 350e3]");
   refused("repeated-design-point", bad, "--jobs 2",
           {"key 'parameters'", "design point 5 (350000, 0.3) repeats design point 1", "[scatter] replicates"});
+  // A key of whole numbers: the design's values pass, but the fit would give it 213.6.
+  bad = spec;
+  bad.replace(bad.find("particle.friction"), 17, "sample.count");
+  bad.replace(bad.find("[0.3, 0.2, 0.3, 0.4, 0.3]"), 25, "[200, 150, 200, 250, 200]");
+  refused("whole-number-key", bad, "",
+          {"parameters[1].key", "does not accept sample.count = 188.196", "cannot be one"});
   // Two parameters setting one key: the second would override the first.
   bad = spec;
   bad.replace(bad.find("particle.friction"), 17, "particle.normal_stiffness");
