@@ -121,6 +121,27 @@ Eigen::VectorXd tolerances(const Problem& p, const Eigen::VectorXd& scatter, int
 // surfaces do not show (unseen_scatter_variance). G is the linearisation of the solver's
 // estimator, whose weights are the inverse measurement covariance S_t^-1 (1 / sigma_t^2
 // for independent targets).
+// Which parameter (or combination) the targets do not determine: the direction of least
+// response, the right singular vector of the smallest singular value of the Jacobian scaled
+// to targets in their uncertainties and parameters over their ranges, J_ij (upper_j -
+// lower_j) / sigma_t,i. Its parameters with a weight of at least a third of the largest.
+std::string undetermined_direction(const Problem& p, const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& sig_t) {
+  const Eigen::Index n = static_cast<Eigen::Index>(p.parameters.size());
+  Eigen::VectorXd range(n);
+  for (Eigen::Index j = 0; j < n; ++j) range[j] = p.parameters[j].upper - p.parameters[j].lower;
+  const Eigen::MatrixXd scaled = sig_t.cwiseInverse().asDiagonal() * jacobian * range.asDiagonal();
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled, Eigen::ComputeFullV);
+  const Eigen::VectorXd v = svd.matrixV().col(n - 1).cwiseAbs();  // singular values are sorted, largest first
+  std::vector<std::string> names;
+  for (Eigen::Index j = 0; j < n; ++j)
+    if (v[j] >= v.maxCoeff() / 3.0) names.push_back(p.parameters[j].name);
+  if (names.size() == 1) return names[0];
+  std::string list;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    list += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+  return "a combination of " + list;
+}
+
 void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>& s, CalibrationResult& r) {
   const Eigen::Index n = static_cast<Eigen::Index>(p.parameters.size());
   r.jacobian = surfaces_jacobian(s, r.solution);
@@ -142,8 +163,9 @@ void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>&
   Eigen::MatrixXd G;
   Eigen::FullPivLU<Eigen::MatrixXd> lu(normal);
   if (lu.rank() < n) {
-    r.warnings.push_back("the fitted surfaces are (nearly) flat in some parameter at the solution: the parameter is not "
-                         "determined by the targets; its uncertainty is reported as infinite");
+    r.warnings.push_back("the fitted surfaces are (nearly) flat in " + undetermined_direction(p, r.jacobian, sig_t) +
+                         " at the solution: the targets do not determine it; the uncertainties are reported as "
+                         "infinite");
     const double inf = std::numeric_limits<double>::infinity();
     r.sigma_target = r.sigma_surface = r.sigma_scatter = r.sigma = Eigen::VectorXd::Constant(n, inf);
     return;

@@ -177,6 +177,13 @@ Spec read_spec(const std::string& path) {
     throw ConfigError(path, "", m.str());
   }
   const Node root{path, &doc, "", {}};
+  // The top level first: a misspelt [modle] would otherwise read as a missing model.config.
+  static const std::set<std::string> kTopLevel = {"stage", "title",      "provenance", "model",   "parameters",
+                                                  "fit",   "sequential", "scatter",    "measured"};
+  for (const auto& [key, value] : doc)
+    if (!kTopLevel.count(std::string(key.str())))
+      root.fail(std::string(key.str()), "unknown key or table (misspelt?): a spec has stage, title, provenance, "
+                                        "[model], [[parameters]], [fit], [sequential], [scatter] and [measured]");
   const std::string stage = root.string("stage", "", true);
   if (stage == "density") s.stage = Stage::kDensity;
   else if (stage == "compression") s.stage = Stage::kCompression;
@@ -299,11 +306,21 @@ Spec read_spec(const std::string& path) {
     seq.fail("max_runs", "must allow the " + std::to_string(np + 1) + " start points and one refinement run (>= " +
                              std::to_string(np + 2) + ")");
   if (const toml::node* st = seq.get("start")) {
+    // The shape expected, shown with this spec's own first design points: one array per
+    // point, one value per parameter (with one parameter, [[350000], [450000]]).
+    std::string example;
+    for (std::size_t k = 0; k <= np && k < p.design.size(); ++k) {
+      std::string point;
+      for (std::size_t j = 0; j < np; ++j) point += (j ? ", " : "") + format_shortest(p.design[k][j]);
+      example += (k ? ", [" : "[") + point + "]";
+    }
+    const std::string shape = "an array of " + std::to_string(np + 1) + " or more points, each an array of " +
+                              std::to_string(np) + " value(s) in the order of [[parameters]], e.g. [" + example + "]";
     const toml::array* a = st->as_array();
-    if (!a) seq.fail("start", "must be an array of points, e.g. [[400e3, 0.3], [450e3, 0.3], [400e3, 0.4]]");
+    if (!a) seq.fail("start", "must be " + shape);
     for (const auto& row : *a) {
       const toml::array* r = row.as_array();
-      if (!r || r->size() != np) seq.fail("start", "every point needs " + std::to_string(np) + " values");
+      if (!r || r->size() != np) seq.fail("start", "must be " + shape);
       Eigen::VectorXd x(np);
       for (std::size_t j = 0; j < np; ++j) {
         auto v = (*r)[j].value<double>();
@@ -320,11 +337,14 @@ Spec read_spec(const std::string& path) {
       for (std::size_t l = 0; l < p.sequential_start.size(); ++l)
         if (p.sequential_start[l] == x)
           seq.fail("start", "point " + std::to_string(p.sequential_start.size() + 1) + " repeats point " +
-                                std::to_string(l + 1) + ": the start points must span a plane");
+                                std::to_string(l + 1) + ": the start points must span " +
+                                (np == 1 ? std::string("a line") : "a plane"));
       p.sequential_start.push_back(x);
     }
     if (p.sequential_start.size() < np + 1)
-      seq.fail("start", "needs at least " + std::to_string(np + 1) + " points to determine a plane");
+      seq.fail("start", "needs at least " + std::to_string(np + 1) + " points to determine " +
+                            (np == 1 ? std::string("a line") : "a plane") + ", got " +
+                            std::to_string(p.sequential_start.size()));
   }
   seq.reject_unknown();
   // Realisation scatter: the same point with other seeds (calibrate.hpp).
@@ -507,8 +527,10 @@ Spec read_spec(const std::string& path) {
     if (mc.cohesion < 0.0)
       s.warnings.push_back("the measured line has a negative cohesion (" + fmt(mc.cohesion) + " Pa): check the data");
   }
+  if (s.stage == Stage::kDensity && m.has("correlation"))
+    m.fail("correlation", "correlates two targets from one fit (compression: c1 and c2; shear: C and tan(Phi)); a "
+                          "density spec has one target, bulk_density");
   m.reject_unknown();
-  root.reject_unknown();
   return s;
 }
 

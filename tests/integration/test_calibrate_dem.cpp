@@ -393,6 +393,27 @@ TEST_F(CalibrateCompression, BadSpecValuesAndOutputFoldersAreRefusedBeforeAnyRun
   bad.replace(bad.find("[0.3, 0.2, 0.3, 0.4, 0.3]"), 25, "[200, 150, 200, 250, 200]");
   refused("whole-number-key", bad, "",
           {"parameters[1].key", "does not accept sample.count = 188.196", "cannot be one"});
+  // A misspelt table is named as such (it read as a missing model.config).
+  bad = spec;
+  bad.replace(bad.find("[model]"), 7, "[modle]");
+  refused("misspelt-table", bad, "", {"key 'modle': unknown key or table (misspelt?)"});
+  // sequential.start of the wrong shape: the message shows the shape with the spec's own
+  // design points.
+  bad = spec;
+  bad.replace(bad.find("max_runs = 10"), 13, "max_runs = 10\nstart = [400e3, 450e3, 500e3]");
+  refused("start-flat-list", bad, "--mode sequential",
+          {"sequential.start", "each an array of 2 value(s)", "e.g. [[350000, 0.3], [450000, 0.2], [450000, 0.3]]"});
+  // A correlation in a density spec, which has one target.
+  write_file(dir_ / "density-correlation.toml",
+             "stage = \"density\"\n[model]\nconfig = \"" + kOed + "\"\n[[parameters]]\nname = \"rho_p\"\n"
+             "key = \"particle.density\"\ndesign = [1200.0, 1300.0]\n[measured]\nbulk_density = 700.0\n"
+             "bulk_density_uncertainty = 7.0\ncorrelation = 0.5\n");
+  const CliResult density = run_colza("calibrate density --quiet --spec " + (dir_ / "density-correlation.toml").string() +
+                                      " --out " + (dir_ / "out-density-correlation").string());
+  EXPECT_EQ(density.exit_code, 2) << density.stderr_text;
+  EXPECT_NE(density.stderr_text.find("key 'measured.correlation': correlates two targets from one fit"),
+            std::string::npos)
+      << density.stderr_text;
   // Two parameters setting one key: the second would override the first.
   bad = spec;
   bad.replace(bad.find("particle.friction"), 17, "particle.normal_stiffness");

@@ -392,3 +392,17 @@ TEST(CalibrationIdentity, AParameterTheTargetsHardlyFeelIsReportedAsNotDetermine
       calibrate_paper(compression_problem(kA * Eigen::Vector2d(437e3, 0.34) + kB, Eigen::Vector2d(1e4, 2e6)), linear_model, {});
   for (const auto& w : ok.warnings) EXPECT_EQ(w.find("is not determined"), std::string::npos) << w;
 }
+
+// A parameter the surfaces do not depend on at all: the uncertainty is infinite, and the
+// warning names the parameter (it said "flat in some parameter").
+TEST(CalibrationIdentity, AFlatParameterIsNamed) {
+  const ForwardModel model = [](const Eigen::VectorXd& x) {
+    return Eigen::VectorXd(Eigen::Vector2d(0.9 * x[0] + 2e4, 50.0 * x[0] + 1e7));  // mu_pp has no effect
+  };
+  const Problem p = compression_problem(Eigen::Vector2d(0.9 * 437e3 + 2e4, 50.0 * 437e3 + 1e7), Eigen::Vector2d(1e4, 2e6));
+  const CalibrationResult r = calibrate_paper(p, model, {});
+  EXPECT_TRUE(std::isinf(r.sigma[1]));
+  std::string all;
+  for (const auto& w : r.warnings) all += w + "\n";
+  EXPECT_NE(all.find("the fitted surfaces are (nearly) flat in mu_pp at the solution"), std::string::npos) << all;
+}
