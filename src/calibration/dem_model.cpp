@@ -151,9 +151,9 @@ std::shared_ptr<const ShearSample> DemModel::shear_sample(const RunConfig& c) {
     const fs::path file = dir / "packing.txt";
     Progress quiet(false);
     if (!fs::exists(file)) {
-      fs::create_directories(dir);
       const auto t0 = std::chrono::steady_clock::now();
       const ShearSample s = prepare_shear_sample(c, quiet);
+      fs::create_directories(dir);  // only now: an interrupted settling leaves no empty folder
       write_packing_atomically(file.string(), s.particles);
       if (verbose_)
         std::printf("  shear sample: %zu particles settled (%.1f s) -> %s\n", s.particles.size(),

@@ -61,6 +61,11 @@ std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const 
                                             (line.find(';') != std::string::npos && line.find(',') == std::string::npos
                                                  ? " (columns must be separated by commas, not semicolons)"
                                                  : ""));
+    // A column named twice (a spreadsheet's copied column) would be read from its first
+    // place without a word; which one is meant is the user's to say.
+    if (std::find(it + 1, header.end(), c) != header.end())
+      throw ConfigError(spec_file, key, csv + ": the header line \"" + line + "\" names column \"" + c +
+                                            "\" twice: rename or remove one");
     index.push_back(static_cast<std::size_t>(it - header.begin()));
   }
   std::vector<std::vector<double>> out(columns.size());

@@ -143,6 +143,12 @@ TEST_F(MeasuredShearCurveTest, ASpreadsheetsByteOrderMarkIsReadAndSemicolonsAreN
   EXPECT_NE(m.find("separated by commas, not semicolons"), std::string::npos) << m;
 }
 
+TEST_F(MeasuredShearCurveTest, AColumnNamedTwiceIsAnError) {
+  const std::string m =
+      error_of(write("twice.csv", "shear_displacement,shear_stress,shear_stress\n0,1000,900\n0.001,1100,950\n"));
+  EXPECT_NE(m.find("names column \"shear_stress\" twice"), std::string::npos) << m;
+}
+
 TEST_F(MeasuredShearCurveTest, NonNumericCellNamesLineAndColumn) {
   const std::string m = error_of(write("c.csv", "# comment\nshear_displacement,shear_stress\n0,0\n0.001,12x\n"));
   EXPECT_NE(m.find("c.csv: line 4: column \"shear_stress\" is \"12x\", not a finite number"), std::string::npos) << m;
