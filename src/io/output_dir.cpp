@@ -94,6 +94,25 @@ std::vector<std::string> earlier_run_outputs(const fs::path& dir) {
   return names;
 }
 
+std::string earlier_result_command(const fs::path& dir) {
+  std::ifstream in(dir / "summary.json");
+  if (!in) return "";
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object()) return "";
+  if (j.contains("scenario") && j["scenario"].is_string()) return "run " + j["scenario"].get<std::string>();
+  if (j.contains("stage") && j["stage"].is_string() && j.contains("mode"))
+    return "calibrate " + j["stage"].get<std::string>();
+  return "";
+}
+
+void refuse_another_commands_result(const fs::path& dir, const std::string& command) {
+  const std::string earlier = earlier_result_command(dir);
+  if (earlier.empty() || earlier.rfind(command + " ", 0) == 0) return;
+  throw ConfigError("--out " + dir.string(), "",
+                    "holds the result of `colza " + earlier + "`: --force replaces an earlier result of `colza " +
+                        command + "` only; choose another --out");
+}
+
 void write_atomically(const fs::path& file, const std::function<void(const std::string& tmp)>& write) {
   const std::string tmp = file.string() + ".tmp." + std::to_string(::getpid());
   write(tmp);

@@ -143,9 +143,18 @@ TEST_F(CalibrateCompression, PaperProcedureRecoversKnAndSaysWhatItCannotTell) {
   const auto s2 = read_json(out / "summary.json");
   EXPECT_EQ(s2["runs_reused"].get<int>(), 6);
   EXPECT_EQ(s2["parameters"][0]["value"].get<double>(), s["parameters"][0]["value"].get<double>());
-  // Without --force a finished calibration is not replaced.
+  // Without --force a finished calibration is not replaced; a `colza run --force` does not
+  // replace it either (its report and runs/ would stay beside the run's files).
   EXPECT_EQ(run_colza("calibrate compression --quiet --spec " + (dir_ / "spec.toml").string() + " --out " + out.string())
                 .exit_code, 2);
+  const std::string calibration_summary = read_file(out / "summary.json");
+  const CliResult run_into = run_colza("run oedometer --quiet --force --config " + kOed + " --out " + out.string());
+  EXPECT_EQ(run_into.exit_code, 2) << run_into.stderr_text;
+  EXPECT_NE(run_into.stderr_text.find("holds the result of `colza calibrate compression`: --force replaces an earlier "
+                                      "result of `colza run` only"),
+            std::string::npos)
+      << run_into.stderr_text;
+  EXPECT_EQ(read_file(out / "summary.json"), calibration_summary);
   // A stopped one (its runs/ holds design runs and no summary.json yet) is resumed without
   // --force, its finished runs reused.
   fs::remove(out / "summary.json");
@@ -408,6 +417,19 @@ TEST_F(CalibrateCompression, BadSpecValuesAndOutputFoldersAreRefusedBeforeAnyRun
              "stage = \"density\"\n[model]\nconfig = \"" + kOed + "\"\n[[parameters]]\nname = \"rho_p\"\n"
              "key = \"particle.density\"\ndesign = [1200.0, 1300.0]\n[measured]\nbulk_density = 700.0\n"
              "bulk_density_uncertainty = 7.0\ncorrelation = 0.5\n");
+  // --force into a `colza run` result: refused (its curve and packing would stay beside the
+  // calibration's report), and the run's files kept.
+  const fs::path run_out = dir_ / "pack";  // the fixture's `colza run oedometer`
+  const std::string run_summary = read_file(run_out / "summary.json");
+  const CliResult into_run = run_colza("calibrate compression --quiet --force --spec " + (dir_ / "spec.toml").string() +
+                                       " --out " + run_out.string());
+  EXPECT_EQ(into_run.exit_code, 2) << into_run.stderr_text;
+  EXPECT_NE(into_run.stderr_text.find("holds the result of `colza run oedometer`: --force replaces an earlier result "
+                                      "of `colza calibrate` only"),
+            std::string::npos)
+      << into_run.stderr_text;
+  EXPECT_EQ(read_file(run_out / "summary.json"), run_summary);
+  EXPECT_FALSE(fs::exists(run_out / "runs"));
   const CliResult density = run_colza("calibrate density --quiet --spec " + (dir_ / "density-correlation.toml").string() +
                                       " --out " + (dir_ / "out-density-correlation").string());
   EXPECT_EQ(density.exit_code, 2) << density.stderr_text;
