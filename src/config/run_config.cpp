@@ -285,7 +285,7 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
   c.contact = read_contact_model(contact);
   c.integration = read_integration(root.table("integration"));
   // Bonds join the candidate pairs within bond_gap, and only pairs closer than the Verlet skin
-  // are candidates (scenario/settling.hpp install_bonds).
+  // are candidates (scenario/bonds.hpp install_bonds).
   if (installs_bonds_at_a_moment(c.contact.bond_install) && c.contact.bond_gap >= c.integration.verlet_skin) {
     // Both values in the message: either may come from the file or from --set. 15 digits,
     // so that a gap a hair above the skin does not print as the same number.

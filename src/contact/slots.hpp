@@ -80,7 +80,7 @@ enum class BondInstallMoment {
 };
 const char* to_string(BondInstallMoment moment);
 // Whether bonds are put on the contacts present at one moment (install_bonds,
-// scenario/settling.hpp), rather than never or as contacts form.
+// scenario/bonds.hpp), rather than never or as contacts form.
 inline bool installs_bonds_at_a_moment(BondInstallMoment m) {
   return m == BondInstallMoment::kAfterSettling || m == BondInstallMoment::kBeforeLoading;
 }

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "scenario/bonds.hpp"
 #include "scenario/generation.hpp"
+#include "scenario/sample_preparation.hpp"
 
 namespace colza {
 

@@ -3,7 +3,7 @@
 #include <utility>
 
 #include "engine/stepper.hpp"
-#include "scenario/settling.hpp"
+#include "scenario/bonds.hpp"
 
 namespace colza {
 

@@ -8,7 +8,9 @@
 
 #include "analysis/shear_strength.hpp"
 #include "contact/slots.hpp"
+#include "scenario/bonds.hpp"
 #include "scenario/generation.hpp"
+#include "scenario/sample_preparation.hpp"
 #include "scenario/plate_servo.hpp"
 
 namespace colza {

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "engine/stepper.hpp"
-#include "scenario/settling.hpp"
+#include "scenario/bonds.hpp"
 
 using namespace colza;
 

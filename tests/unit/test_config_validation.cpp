@@ -87,7 +87,7 @@ TEST(ConfigValidation, OtherRangeAndChoiceErrors) {
 
 TEST(ConfigValidation, BondGapMustBeBelowTheSkin) {
   // Bonds are put on candidate pairs, and only pairs closer than the Verlet skin are sure to
-  // be candidates (install_bonds, scenario/settling.hpp).
+  // be candidates (install_bonds, scenario/bonds.hpp).
   const ConfigError e = oedometer_error(
       "[contact]\nbond = \"contact_bond\"\nbond_gap = 0.0005\n[integration]\nverlet_skin = 0.0005\n");
   EXPECT_EQ(e.key(), "contact.bond_gap");

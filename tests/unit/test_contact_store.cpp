@@ -1,5 +1,5 @@
 // Contact history kept by pair across neighbour-list rebuilds and particle removal
-// (contact/contact_store.hpp), and bond installation (scenario/settling.hpp).
+// (contact/contact_store.hpp), and bond installation (scenario/bonds.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +7,8 @@
 #include "contact/contact_store.hpp"
 #include "core/particles.hpp"
 #include "engine/stepper.hpp"
-#include "scenario/settling.hpp"
+#include "scenario/bonds.hpp"
+#include "scenario/sample_preparation.hpp"
 
 using namespace colza;
 

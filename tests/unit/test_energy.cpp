@@ -34,7 +34,7 @@
 #include <vector>
 
 #include "engine/stepper.hpp"
-#include "scenario/settling.hpp"
+#include "scenario/bonds.hpp"
 
 using namespace colza;
 

@@ -273,7 +273,7 @@ TEST(ForcePaths, CandidatesApartGiveTheSameBitsOnEveryPath) {
 
 // Which pairs are candidates, and when the lists are built, never shows in a result: forces
 // are summed in pair order, a candidate that is not touching carries no force, and a
-// contact's history is carried across rebuilds. install_bonds (scenario/settling.hpp) relies
+// contact's history is carried across rebuilds. install_bonds (scenario/bonds.hpp) relies
 // on this when it rebuilds the lists before bonding; the skin is then a speed setting only.
 TEST(ForcePaths, TheSkinAndTheMomentOfRebuildsChangeNoResult) {
   const PathRun narrow = run_path({.particle_materials = 1, .bonds = true, .skin = 0.3e-3}, 1);

@@ -8,7 +8,7 @@
 #include "core/particles.hpp"
 #include "engine/stepper.hpp"
 #include "integrate/time_step.hpp"
-#include "scenario/settling.hpp"
+#include "scenario/bonds.hpp"
 
 using namespace colza;
 
