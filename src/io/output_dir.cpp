@@ -139,9 +139,22 @@ std::string staging_prefix() {
   return std::string(kStagingPrefix) + host + "-";
 }
 
+// Whether process `pid` of this machine still runs: it exists and is not a zombie (a process
+// that has ended but that its parent has not yet waited for holds its pid, yet writes nothing
+// any more; /proc/<pid>/stat's state after the command's closing parenthesis is 'Z').
+bool process_runs(pid_t pid) {
+  if (::kill(pid, 0) != 0 && errno == ESRCH) return false;
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string text;
+  if (!std::getline(stat, text)) return true;  // no /proc: trust kill
+  const std::size_t close = text.rfind(')');
+  return !(close != std::string::npos && close + 2 < text.size() && text[close + 2] == 'Z');
+}
+
 // Removes the staging folders that processes of this machine left when they were killed
-// (SIGKILL, a crash: Ctrl-C and SIGTERM remove their own, see core/interrupt.hpp). A folder
-// whose process still runs, or that another machine wrote, is left alone.
+// (SIGKILL, a crash: Ctrl-C and SIGTERM remove their own, see core/interrupt.hpp), or that a
+// zombie holds. A folder whose process still runs, or that another machine wrote, is left
+// alone.
 void remove_abandoned_staging(const fs::path& dir, const std::string& prefix) {
   std::error_code ec;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
@@ -151,7 +164,7 @@ void remove_abandoned_staging(const fs::path& dir, const std::string& prefix) {
     if (pid_text.empty() || pid_text.size() > 9 || pid_text.find_first_not_of("0123456789") != std::string::npos)
       continue;
     const pid_t pid = static_cast<pid_t>(std::stol(pid_text));
-    if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
+    if (pid == ::getpid() || process_runs(pid)) continue;
     std::error_code remove_error;
     fs::remove_all(it->path(), remove_error);
   }

@@ -240,8 +240,8 @@ TEST(CliErrors, InterruptedRunRemovesItsPartialOutputsAndKeepsTheEarlierResult) 
 
 TEST(CliErrors, StagingLeftByAKilledRunIsRemovedByTheNextRun) {
   // A run killed outright (SIGKILL, a crash) cannot clean up; the next run into the same
-  // directory removes the staging folders of this machine's processes that have ended, and
-  // leaves those of other machines (a shared network disk) alone.
+  // directory removes the staging folders of this machine's processes that have ended (a
+  // zombie too), and leaves those of other machines (a shared network disk) alone.
   const fs::path out = scratch_dir("abandoned-staging");
   fs::create_directories(out);
   char host[256] = {0};
@@ -251,14 +251,22 @@ TEST(CliErrors, StagingLeftByAKilledRunIsRemovedByTheNextRun) {
   if (ended == 0) ::_exit(0);
   ASSERT_EQ(::waitpid(ended, nullptr, 0), ended);
   const fs::path abandoned = out / (".colza-partial-" + std::string(host) + "-" + std::to_string(ended));
+  // A zombie: ended, not yet waited for by its parent (this test, until the run is done). It
+  // holds its pid, so kill(pid, 0) finds it, but it writes nothing any more.
+  const pid_t zombie = ::fork();
+  ASSERT_GE(zombie, 0);
+  if (zombie == 0) ::_exit(0);
+  const fs::path zombies = out / (".colza-partial-" + std::string(host) + "-" + std::to_string(zombie));
   const fs::path elsewhere = out / ".colza-partial-some-other-machine-1";
-  for (const fs::path& d : {abandoned, elsewhere}) {
+  for (const fs::path& d : {abandoned, zombies, elsewhere}) {
     fs::create_directories(d);
     write_file(d / "curve.csv", "half\n");
   }
   const CliResult r = run_colza("run oedometer --quiet --config " + kConfig + " --out " + out.string());
+  ASSERT_EQ(::waitpid(zombie, nullptr, 0), zombie);
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   EXPECT_TRUE(fs::exists(out / "summary.json"));
   EXPECT_FALSE(fs::exists(abandoned));
+  EXPECT_FALSE(fs::exists(zombies));
   EXPECT_TRUE(fs::exists(elsewhere / "curve.csv"));
 }
