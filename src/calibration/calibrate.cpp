@@ -4,11 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <numeric>
 
+#include "calibration/calibration_common.hpp"
+#include "calibration/surface_solver.hpp"
+#include "calibration/uncertainty.hpp"
 #include "core/concurrent.hpp"
 #include "core/interrupt.hpp"
-#include "io/format_number.hpp"
 
 namespace colza::calibration {
 
@@ -25,45 +26,6 @@ Eigen::VectorXd Problem::upper() const {
 }
 
 namespace {
-
-std::string fmt(double v) { return format_significant(v, 6); }
-
-std::string point_text(const Problem& p, const Eigen::VectorXd& x) {
-  std::string s = "(";
-  for (std::size_t j = 0; j < p.parameters.size(); ++j) s += (j ? ", " : "") + p.parameters[j].name + " = " + fmt(x[j]);
-  return s + ")";
-}
-
-Eigen::VectorXd evaluate_surfaces(const std::vector<ResponseSurface>& s, const Eigen::VectorXd& x) {
-  Eigen::VectorXd y(s.size());
-  for (std::size_t i = 0; i < s.size(); ++i) y[i] = s[i].predict(x);
-  return y;
-}
-
-Eigen::MatrixXd surfaces_jacobian(const std::vector<ResponseSurface>& s, const Eigen::VectorXd& x) {
-  Eigen::MatrixXd J(s.size(), x.size());
-  for (std::size_t i = 0; i < s.size(); ++i) J.row(i) = s[i].gradient(x).transpose();
-  return J;
-}
-
-// D R D: the covariance of errors with standard deviations sd and correlation R (empty:
-// independent, the diagonal).
-Eigen::MatrixXd covariance_of(const Eigen::VectorXd& sd, const Eigen::MatrixXd& correlation) {
-  if (correlation.size() == 0) return Eigen::MatrixXd(sd.array().square().matrix().asDiagonal());
-  return sd.asDiagonal() * correlation * sd.asDiagonal();
-}
-
-Eigen::VectorXd target_values(const Problem& p) {
-  Eigen::VectorXd t(p.targets.size());
-  for (std::size_t i = 0; i < p.targets.size(); ++i) t[i] = p.targets[i].value;
-  return t;
-}
-
-Eigen::VectorXd target_sigmas(const Problem& p) {
-  Eigen::VectorXd t(p.targets.size());
-  for (std::size_t i = 0; i < p.targets.size(); ++i) t[i] = p.targets[i].uncertainty;
-  return t;
-}
 
 Eigen::MatrixXd stack(const std::vector<Run>& runs, const std::vector<std::size_t>& idx, bool outputs) {
   const auto& first = outputs ? runs[idx[0]].y : runs[idx[0]].x;
@@ -88,18 +50,6 @@ std::vector<ResponseSurface> fit_surfaces(const Problem& p, const std::vector<Ru
   return s;
 }
 
-// The part of the realisation scatter s that the design's surfaces do not show in their
-// residual sigma_s: max(0, s^2 - sigma_s^2), per target. Design runs that each settle their
-// own packing are independent draws, their residual already holds the scatter (nothing is
-// added); design runs that share one packing or sample carry one common offset of std ~s,
-// invisible in the residual, which then moves the solution as a whole.
-Eigen::VectorXd unseen_scatter_variance(const Eigen::VectorXd& scatter, const std::vector<ResponseSurface>& s) {
-  Eigen::VectorXd v = Eigen::VectorXd::Zero(scatter.size());
-  for (Eigen::Index i = 0; i < scatter.size(); ++i)
-    v[i] = std::max(0.0, scatter[i] * scatter[i] - std::pow(s[static_cast<std::size_t>(i)].residual_std(), 2));
-  return v;
-}
-
 // What a target's error is judged against: the measurement uncertainty u_i, combined, when
 // the scatter s_i was measured, with what a realisation adds. A single run judged on its own:
 // sqrt(u^2 + s^2). The mean of n realisations at a point solved on surfaces that carry a
@@ -114,101 +64,6 @@ Eigen::VectorXd tolerances(const Problem& p, const Eigen::VectorXd& scatter, int
   Eigen::ArrayXd v = t.array().square() + scatter.array().square() / n;
   if (offset.size() == t.size() && averaged > 1) v += offset.array() * (1.0 - 2.0 / n);
   return v.sqrt().matrix();
-}
-
-// Fills the solution's Jacobian, predicted targets and parameter uncertainties: measurement
-// (sigma_t), surface residual (sigma_s) and, when measured, the realisation scatter the
-// surfaces do not show (unseen_scatter_variance). G is the linearisation of the solver's
-// estimator, whose weights are the inverse measurement covariance S_t^-1 (1 / sigma_t^2
-// for independent targets).
-// Which parameter (or combination) the targets do not determine: the direction of least
-// response, the right singular vector of the smallest singular value of the Jacobian scaled
-// to targets in their uncertainties and parameters over their ranges, J_ij (upper_j -
-// lower_j) / sigma_t,i. Its parameters with a weight of at least a third of the largest.
-std::string undetermined_direction(const Problem& p, const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& sig_t) {
-  const Eigen::Index n = static_cast<Eigen::Index>(p.parameters.size());
-  Eigen::VectorXd range(n);
-  for (Eigen::Index j = 0; j < n; ++j) range[j] = p.parameters[j].upper - p.parameters[j].lower;
-  const Eigen::MatrixXd scaled = sig_t.cwiseInverse().asDiagonal() * jacobian * range.asDiagonal();
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled, Eigen::ComputeFullV);
-  const Eigen::VectorXd v = svd.matrixV().col(n - 1).cwiseAbs();  // singular values are sorted, largest first
-  std::vector<std::string> names;
-  for (Eigen::Index j = 0; j < n; ++j)
-    if (v[j] >= v.maxCoeff() / 3.0) names.push_back(p.parameters[j].name);
-  if (names.size() == 1) return names[0];
-  std::string list;
-  for (std::size_t k = 0; k < names.size(); ++k)
-    list += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
-  return "a combination of " + list;
-}
-
-void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>& s, CalibrationResult& r) {
-  const Eigen::Index n = static_cast<Eigen::Index>(p.parameters.size());
-  r.jacobian = surfaces_jacobian(s, r.solution);
-  r.predicted = evaluate_surfaces(s, r.solution);
-  const Eigen::VectorXd sig_t = target_sigmas(p);
-  Eigen::VectorXd sig_s(s.size());
-  for (std::size_t i = 0; i < s.size(); ++i) sig_s[i] = s[i].residual_std();
-  const bool scatter = r.scatter.size() == sig_t.size();
-  const Eigen::VectorXd sig_r =
-      scatter ? Eigen::VectorXd(unseen_scatter_variance(r.scatter, s).cwiseSqrt()) : Eigen::VectorXd::Zero(sig_t.size());
-  const Eigen::MatrixXd cov_targets = covariance_of(sig_t, p.target_correlation);
-  const Eigen::VectorXd inv_sig = sig_t.array().inverse();
-  const Eigen::MatrixXd W = p.target_correlation.size() == 0  // the solver's weights, S_t^-1 = D^-1 R^-1 D^-1
-                                ? Eigen::MatrixXd(sig_t.array().square().inverse().matrix().asDiagonal())
-                                : Eigen::MatrixXd(inv_sig.asDiagonal() * p.target_correlation.inverse() *
-                                                  inv_sig.asDiagonal());
-  const Eigen::MatrixXd JtW = r.jacobian.transpose() * W;
-  const Eigen::MatrixXd normal = JtW * r.jacobian;
-  Eigen::MatrixXd G;
-  Eigen::FullPivLU<Eigen::MatrixXd> lu(normal);
-  if (lu.rank() < n) {
-    r.warnings.push_back("the fitted surfaces are (nearly) flat in " + undetermined_direction(p, r.jacobian, sig_t) +
-                         " at the solution: the targets do not determine it; the uncertainties are reported as "
-                         "infinite");
-    const double inf = std::numeric_limits<double>::infinity();
-    r.sigma_target = r.sigma_surface = r.sigma_scatter = r.sigma = Eigen::VectorXd::Constant(n, inf);
-    return;
-  }
-  G = lu.solve(JtW);  // dx = G dy (= J^-1 for a square system)
-  auto through_G = [&](const Eigen::MatrixXd& cov_y) { return Eigen::MatrixXd(G * cov_y * G.transpose()); };
-  const Eigen::MatrixXd cov_t = through_G(cov_targets);
-  const Eigen::MatrixXd cov_s = through_G(covariance_of(sig_s, {}));
-  const Eigen::MatrixXd cov_r = through_G(covariance_of(sig_r, {}));
-  r.sigma_target = cov_t.diagonal().cwiseSqrt();
-  r.sigma_surface = cov_s.diagonal().cwiseSqrt();
-  r.sigma_scatter = cov_r.diagonal().cwiseSqrt();
-  r.sigma = (cov_t + cov_s + cov_r).diagonal().cwiseSqrt();
-}
-
-// A parameter whose 95 % interval (x - 2 sigma .. x + 2 sigma, 4 sigma wide; sigma from
-// propagate_uncertainty) is wider than its whole design range is not determined by the
-// targets: values across the whole range reproduce them within their uncertainty and the
-// surfaces' error, so the solution's value of it is arbitrary. One whose interval is wider
-// than half the range is weakly determined. Says so, with how much each target's surface
-// changes across the range (|J_ij| times the range, in the target's unit and in units of
-// its uncertainty). Infinite sigma has its own warning (propagate_uncertainty).
-void determination_warnings(const Problem& p, CalibrationResult& r) {
-  for (std::size_t j = 0; j < p.parameters.size(); ++j) {
-    const Parameter& q = p.parameters[j];
-    const double range = q.upper - q.lower, sigma = r.sigma[static_cast<Eigen::Index>(j)];
-    const double interval = 4.0 * sigma;
-    if (!std::isfinite(sigma) || interval <= 0.5 * range) continue;
-    std::string effects;
-    for (std::size_t i = 0; i < p.targets.size(); ++i) {
-      const double change = std::abs(r.jacobian(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j))) * range;
-      effects += (i ? ", " : "") + p.targets[i].name + " by " + fmt(change) + " " + p.targets[i].unit + " (" +
-                 fmt(change / p.targets[i].uncertainty) + " uncertainties)";
-    }
-    const bool arbitrary = interval > range;
-    r.warnings.push_back(q.name + (arbitrary ? " is not determined" : " is only weakly determined") +
-                         " by these targets: its 95 % interval, +/- 2 sigma = +/- " + fmt(2.0 * sigma) + " " + q.unit +
-                         " (" + fmt(interval) + " " + q.unit + " wide), is wider than " +
-                         (arbitrary ? "its" : "half its") + " design range " + fmt(q.lower) + " .. " + fmt(q.upper) +
-                         " " + q.unit + " (across it the surfaces change " + effects + "); " +
-                         (arbitrary ? "its value in the solution is arbitrary" : "its value in the solution is rough") +
-                         ": fix it from other data, or add a target that depends on it");
-  }
 }
 
 // The narrowest span, relative to its design range, that the sequential mode's final planes
@@ -412,155 +267,6 @@ std::vector<Eigen::VectorXd> evaluate_batch(const ForwardModel& model, const std
   std::vector<Eigen::VectorXd> out(points.size());
   run_concurrently(points.size(), jobs, [&](std::size_t k) { out[k] = model(points[k]); });
   return out;
-}
-
-namespace {
-
-// Projected Levenberg-Marquardt on the weighted residuals r_i(u) = (f_i(x(u)) - t_i) / sigma_i
-// of the targets `which` (whitened by the Cholesky factor of their covariance when they are
-// correlated), u = (x - mid) / half the scaled parameters, clamped to [lower, upper]; the
-// best of the given starts.
-Eigen::VectorXd least_squares_in_box(const std::vector<ResponseSurface>& s, const std::vector<std::size_t>& which,
-                                     const Problem& p, const Eigen::VectorXd& lower, const Eigen::VectorXd& upper,
-                                     const std::vector<Eigen::VectorXd>& starts) {
-  const ParameterScaling sc = ParameterScaling::from_bounds(p.lower(), p.upper());
-  const Eigen::VectorXd t = target_values(p);
-  const Eigen::VectorXd ulo = sc.to_unit(lower), uhi = sc.to_unit(upper);
-  const Eigen::Index m = static_cast<Eigen::Index>(which.size());
-  // Whitened residuals L^-1 (f - t), Sigma_t = L L^T over the targets `which`; with
-  // independent targets (the usual case) simply (f_i - t_i) / sigma_i.
-  const bool correlated = p.target_correlation.size() != 0;
-  const Eigen::VectorXd sig = target_sigmas(p);
-  Eigen::MatrixXd cov = Eigen::MatrixXd::Identity(m, m);
-  if (correlated) {
-    const Eigen::MatrixXd cov_all = covariance_of(sig, p.target_correlation);
-    for (Eigen::Index a = 0; a < m; ++a)
-      for (Eigen::Index b = 0; b < m; ++b)
-        cov(a, b) = cov_all(static_cast<Eigen::Index>(which[a]), static_cast<Eigen::Index>(which[b]));
-  }
-  const Eigen::LLT<Eigen::MatrixXd> chol(cov);
-  if (chol.info() != Eigen::Success)
-    throw CalibrationError("targets", "the targets' covariance is not positive definite (their correlation is +/-1)");
-  auto residual = [&](const Eigen::VectorXd& u) {
-    const Eigen::VectorXd x = sc.from_unit(u);
-    Eigen::VectorXd r(m);
-    if (!correlated) {
-      for (Eigen::Index k = 0; k < m; ++k) r[k] = (s[which[k]].predict(x) - t[which[k]]) / sig[which[k]];
-      return r;
-    }
-    for (Eigen::Index k = 0; k < m; ++k) r[k] = s[which[k]].predict(x) - t[which[k]];
-    return Eigen::VectorXd(chol.matrixL().solve(r));
-  };
-  auto jacobian = [&](const Eigen::VectorXd& u) {  // d r / d u
-    const Eigen::VectorXd x = sc.from_unit(u);
-    Eigen::MatrixXd J(m, u.size());
-    if (!correlated) {
-      for (Eigen::Index k = 0; k < m; ++k)
-        J.row(k) = (s[which[k]].gradient(x) * (1.0 / sig[which[k]])).cwiseProduct(sc.half).transpose();
-      return J;
-    }
-    for (Eigen::Index k = 0; k < m; ++k) J.row(k) = s[which[k]].gradient(x).cwiseProduct(sc.half).transpose();
-    return Eigen::MatrixXd(chol.matrixL().solve(J));
-  };
-  auto clamp = [&](Eigen::VectorXd u) {
-    for (Eigen::Index j = 0; j < u.size(); ++j) u[j] = std::clamp(u[j], ulo[j], uhi[j]);
-    return u;
-  };
-  auto solve_from = [&](Eigen::VectorXd u) {
-    u = clamp(u);
-    Eigen::VectorXd r = residual(u);
-    double cost = r.squaredNorm(), lambda = 1e-3;
-    for (int it = 0; it < 200 && cost > 1e-28; ++it) {
-      const Eigen::MatrixXd J = jacobian(u);
-      const Eigen::MatrixXd JtJ = J.transpose() * J;
-      const Eigen::VectorXd g = J.transpose() * r;
-      Eigen::MatrixXd A = JtJ;
-      A.diagonal().array() += lambda * (JtJ.diagonal().array() + 1e-12);
-      const Eigen::VectorXd un = clamp(u - A.ldlt().solve(g));
-      const Eigen::VectorXd rn = residual(un);
-      const double cn = rn.squaredNorm();
-      if (cn < cost) {
-        const bool small = (un - u).norm() < 1e-13;
-        u = un, r = rn, cost = cn, lambda = std::max(lambda / 3.0, 1e-12);
-        if (small) break;
-      } else {
-        lambda *= 4.0;
-        if (lambda > 1e12) break;
-      }
-    }
-    return std::make_pair(cost, u);
-  };
-  double best_cost = std::numeric_limits<double>::infinity();
-  Eigen::VectorXd best_u;
-  for (const auto& x0 : starts) {
-    const auto [c, u] = solve_from(sc.to_unit(x0));
-    if (c < best_cost) best_cost = c, best_u = u;
-  }
-  return sc.from_unit(best_u);
-}
-
-// Throws CalibrationError naming the targets the surfaces cannot reach inside [lower, upper]
-// when the joint solution x misses some target by more than its uncertainty.
-//
-// Reach is judged ONE TARGET AT A TIME: the joint solution trades the targets off against
-// each other (weighted least squares), so when one target is out of reach the compromise can
-// also miss a reachable target by more than its uncertainty. Naming the first target missed
-// at the compromise named the wrong one (e.g. cohesion when tan(Phi) was out of reach).
-// Only if every target is reachable alone is the error that they are not reachable together.
-void check_reach(const std::vector<ResponseSurface>& s, const Problem& p, const Eigen::VectorXd& lower,
-                 const Eigen::VectorXd& upper, const std::vector<Eigen::VectorXd>& starts, const Eigen::VectorXd& x) {
-  const Eigen::VectorXd t = target_values(p), sig = target_sigmas(p);
-  const Eigen::VectorXd y = evaluate_surfaces(s, x);
-  std::vector<std::size_t> missed;
-  for (std::size_t i = 0; i < p.targets.size(); ++i)
-    if (std::abs(y[i] - t[i]) > sig[i]) missed.push_back(i);
-  if (missed.empty()) return;
-  const std::string bounds = "inside the bounds " + point_text(p, lower) + " .. " + point_text(p, upper);
-  auto measured_value = [&](std::size_t i) { return fmt(t[i]) + " +/- " + fmt(sig[i]) + " " + p.targets[i].unit; };
-  auto measured = [&](std::size_t i) { return "the measured " + p.targets[i].name + " = " + measured_value(i); };
-  std::string unreachable, first;
-  for (std::size_t i : missed) {
-    const Eigen::VectorXd xi = least_squares_in_box(s, {i}, p, lower, upper, starts);
-    const double yi = s[i].predict(xi);
-    if (std::abs(yi - t[i]) <= sig[i]) continue;
-    // Range of the surface over the box corners (exact for a plane).
-    const std::size_t n = p.parameters.size();
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (std::size_t mask = 0; mask < (std::size_t{1} << n); ++mask) {
-      Eigen::VectorXd c(n);
-      for (std::size_t j = 0; j < n; ++j) c[j] = (mask >> j & 1) ? upper[j] : lower[j];
-      const double v = s[i].predict(c);
-      lo = std::min(lo, v), hi = std::max(hi, v);
-    }
-    if (first.empty()) first = p.targets[i].name;
-    unreachable += (unreachable.empty() ? "" : "; ") + measured(i) + " is outside what the design can reach: " +
-                   bounds + " the surface for " + p.targets[i].name + " gets at best " + fmt(yi) + " (at " +
-                   point_text(p, xi) + "; surface range over the box corners " + fmt(lo) + " .. " + fmt(hi) + ")";
-  }
-  if (!first.empty())
-    throw CalibrationError(first, unreachable + ". Widen or move the design range, or check the measured value");
-  std::string misses;
-  for (std::size_t i : missed)
-    misses += (misses.empty() ? "" : "; ") + p.targets[i].name + " = " + fmt(y[i]) + " for the measured " + measured_value(i);
-  throw CalibrationError(p.targets[missed[0]].name,
-                         "the measured targets cannot all be reached at once: each alone is inside what the design can "
-                         "reach, but " + bounds + " the best compromise (at " + point_text(p, x) +
-                             ", weighted by the inverse covariance of the measured targets) misses " + misses +
-                             ". Widen or move the design range, or check the measured values and their uncertainties");
-}
-
-}  // namespace
-
-Eigen::VectorXd solve_on_surfaces(const std::vector<ResponseSurface>& s, const Problem& p, const Eigen::VectorXd& lower,
-                                  const Eigen::VectorXd& upper, const std::vector<Eigen::VectorXd>& starts,
-                                  bool require_reach) {
-  std::vector<Eigen::VectorXd> all = starts;
-  all.push_back(0.5 * (lower + upper));
-  std::vector<std::size_t> every(p.targets.size());
-  std::iota(every.begin(), every.end(), 0);
-  const Eigen::VectorXd x = least_squares_in_box(s, every, p, lower, upper, all);
-  if (require_reach) check_reach(s, p, lower, upper, all, x);
-  return x;
 }
 
 CalibrationResult calibrate_paper(const Problem& p, const ForwardModel& model, const LoopOptions& opt) {

@@ -34,6 +34,9 @@
 // identity when empty) and S_s = diag(s_residual^2) (surface error).
 // For as many targets as parameters G = J^-1. With a measured scatter, cov(x) gains
 // G diag(o) G^T, o the scatter the surfaces do not show (see above).
+//
+// The loops are here (calibrate.cpp); the solver on the surfaces is in surface_solver.hpp,
+// the parameter uncertainty and the determination warnings in uncertainty.hpp.
 #pragma once
 #include <Eigen/Dense>
 #include <functional>
@@ -149,13 +152,6 @@ struct LoopOptions {
 // Evaluates every point, up to `jobs` at once; results in input order.
 std::vector<Eigen::VectorXd> evaluate_batch(const ForwardModel& model, const std::vector<Eigen::VectorXd>& points,
                                             int jobs);
-
-// Solves surfaces(x) = targets (weighted least squares, projected Levenberg-Marquardt with
-// several starts) inside [lower, upper]. Throws CalibrationError if some target cannot be
-// reached within its uncertainty inside the bounds.
-Eigen::VectorXd solve_on_surfaces(const std::vector<ResponseSurface>& surfaces, const Problem& problem,
-                                  const Eigen::VectorXd& lower, const Eigen::VectorXd& upper,
-                                  const std::vector<Eigen::VectorXd>& starts, bool require_reach);
 
 // Checks the problem (sizes, bounds, uncertainties); throws CalibrationError.
 void validate_problem(const Problem& problem, bool sequential);
