@@ -71,10 +71,11 @@ void run_concurrently(std::size_t count, int threads, Job&& job, int threads_per
   if (failure) std::rethrow_exception(failure);
 }
 
-// The OpenMP threads a run started here would use (1 without OpenMP).
+// The OpenMP threads a run started here would use: 1 inside a parallel region (no nested
+// teams) or without OpenMP.
 inline int worker_threads_here() {
 #ifdef _OPENMP
-  return omp_get_max_threads();
+  return omp_in_parallel() ? 1 : omp_get_max_threads();
 #else
   return 1;
 #endif

@@ -12,6 +12,7 @@
 #endif
 
 #include "contact/contact_law.hpp"
+#include "core/concurrent.hpp"
 #include "core/interrupt.hpp"
 #include "core/unstable_motion.hpp"
 #include "engine/motion_limits.hpp"
@@ -136,14 +137,6 @@ constexpr std::size_t kMinPairsPerThread = 1024;
 
 double seconds_now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-int worker_threads() {
-#ifdef _OPENMP
-  return omp_in_parallel() ? 1 : omp_get_max_threads();
-#else
-  return 1;
-#endif
 }
 
 // Particle pairs [begin, end) in pair order: the batched kernel for the built-in law, the
@@ -346,7 +339,7 @@ template <bool kSlip, class Normal, class Tangential>
 
 void Stepper::compute_forces(World& world) {
   const bool bond_new = physics_.model.bond_install == BondInstallMoment::kOnNewContacts;
-  const int threads = worker_threads();
+  const int threads = worker_threads_here();
   const bool threaded = threads > 1 && world.contacts.particle_pairs.size() >= kMinPairsPerThread * 2;
   if (threaded) {
     if (!partition_.matches(world.contacts, world.particles.size(), world.walls.size(), threads))
@@ -389,7 +382,7 @@ void Stepper::compute_forces(World& world) {
 
 void Stepper::rebuild_neighbours(World& world) {
   neighbours_.invalidate();
-  neighbours_.rebuild(world.particles, world.walls, world.contacts, worker_threads());
+  neighbours_.rebuild(world.particles, world.walls, world.contacts, worker_threads_here());
 }
 
 void Stepper::begin_step(World& world) {
@@ -402,7 +395,7 @@ void Stepper::begin_step(World& world) {
   const bool rebuild = neighbours_.needs_rebuild(world.particles, world.walls);
   if (world.step % kFiniteCheckInterval == 0) require_sound_state(world);
   else if (rebuild) require_finite_positions(world);
-  if (rebuild) neighbours_.rebuild(world.particles, world.walls, world.contacts, worker_threads());
+  if (rebuild) neighbours_.rebuild(world.particles, world.walls, world.contacts, worker_threads_here());
   compute_forces(world);
 }
 
@@ -411,7 +404,7 @@ void Stepper::finish_step(World& world) {
     last_integration_ = report_without_sums();
   } else {
     last_integration_ =
-        integrate_step(world.particles, physics_.integrator, world.dt, worker_threads(), unbalanced_scratch_, sums_);
+        integrate_step(world.particles, physics_.integrator, world.dt, worker_threads_here(), unbalanced_scratch_, sums_);
   }
   ledger_.damping_dissipated += last_integration_.damping_work;
   for (auto& wall : world.walls) wall.origin += world.dt * wall.velocity;
