@@ -9,6 +9,7 @@
 #include <vector>
 #include "checks.hpp"
 #include "report.hpp"
+#include "tolerances.hpp"
 
 namespace crosscheck {
 
@@ -33,7 +34,7 @@ inline std::vector<std::string> normal_stress_argument(double sigma) {
 // A load's run folder name without the code's prefix: "load-25750Pa" for realisation 0 (the
 // sample as colza made it), "load-25750Pa-r3" for realisation 3 of the ensemble.
 inline std::string load_run_name(double sigma, std::size_t realisation) {
-  std::string name = "load-" + fmt(sigma, "%.0f") + "Pa";
+  std::string name = "load-" + whole_pascals(sigma) + "Pa";
   if (realisation > 0) name += "-r" + std::to_string(realisation);
   return name;
 }

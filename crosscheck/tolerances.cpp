@@ -97,15 +97,16 @@ std::map<std::string, Kind> with_ensemble(std::map<std::string, Kind> keys) {
 
 }  // namespace
 
+std::string whole_pascals(double sigma) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.0f", sigma);
+  return text;
+}
+
 std::string loads_sharing_a_run(const std::vector<double>& loads) {
-  const auto to_the_pascal = [](double sigma) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.0f", sigma);  // as load_run_name writes it
-    return std::string(text);
-  };
   for (std::size_t a = 0; a < loads.size(); ++a)
     for (std::size_t b = a + 1; b < loads.size(); ++b)
-      if (to_the_pascal(loads[a]) == to_the_pascal(loads[b])) {
+      if (whole_pascals(loads[a]) == whole_pascals(loads[b])) {
         char text[160];
         std::snprintf(text, sizeof text, "loads %.15g and %.15g Pa are the same to the pascal (they would share runs)",
                       loads[a], loads[b]);
@@ -213,11 +214,12 @@ toml::table read_tolerances(const fs::path& file, const std::string& command, co
       for (const auto& n : *loads) values.push_back(n.value<double>().value_or(0.0));
       if (const std::string why = loads_sharing_a_run(values); !why.empty()) c.fail(h + ".loads", why);
     }
-    for (const auto& [section, wanted, key] : {std::tuple{&oedometer_size, wanted_oedometer, "config"},
-                                               std::tuple{&oedometer_size, wanted_oedometer && s == "full", "settle_config"},
-                                               std::tuple{&shear_size, wanted_shear, "config"}})
+    for (const auto& [section, base, wanted, key] :
+         {std::tuple{&oedometer_size, o, wanted_oedometer, "config"},
+          std::tuple{&oedometer_size, o, wanted_oedometer && s == "full", "settle_config"},
+          std::tuple{&shear_size, h, wanted_shear, "config"}})
       if (const auto path = (*section)[key].value<std::string>(); wanted && path)
-        c.existing_file((section == &shear_size ? h : o) + "." + key, source, *path);
+        c.existing_file(base + "." + key, source, *path);
   }
   return doc;
 }

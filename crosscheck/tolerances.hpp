@@ -17,8 +17,12 @@ class ToleranceError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A normal stress (Pa) rounded to the pascal, as a shear load's run folder is named
+// (load_run_name, shear_setting.hpp): "25750".
+std::string whole_pascals(double sigma);
+
 // "" if no two of `loads` (Pa) round to the same pascal, else what is wrong with which two:
-// such loads would share a run folder (load_run_name, shear_setting.hpp) and their runs.
+// such loads would share a run folder and their runs.
 std::string loads_sharing_a_run(const std::vector<double>& loads);
 
 // Parses `file` and checks every key against the schema below; `command` (micro, oedometer,
