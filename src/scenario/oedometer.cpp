@@ -33,28 +33,6 @@ double total_mass(const ParticleArrays& p) {
   return m;
 }
 
-// A new sample: generated in the generation volume, settled, cut at the rim and stored in
-// space order, then handed on at rest (no velocities, no spins, no contact histories), which
-// is exactly the sample its packing file gives back. So a run from the `packing.txt` a run
-// wrote repeats that run's loading bit for bit, the YADE cross-check (which reads the packing
-// file) starts from the state colza's own runs start from, and the shear box does the same.
-ParticleArrays settled_sample_at_rest(const RunConfig& c, OedometerResult& r, Progress& progress, StageClock& clock) {
-  Stepper stepper(make_physics(c));
-  World world;
-  build_oedometer_container(world, c.oedometer);
-  r.particles_generated = place_generated_sample(
-      world, c,
-      GenerationRegion::vertical_cylinder(Vec3::Zero(), 0.5 * c.oedometer.cylinder_diameter,
-                                          c.oedometer.generation_height),
-      "oedometer.generation_height");
-  r.settling = settle_generated_sample(world, stepper, c.sample, progress);
-  clock.count_steps(r.settling.steps, r.particles_generated);
-  discard_above(world, stepper, c.oedometer.cylinder_height);
-  store_in_space_order(world, stepper);
-  if (world.particles.size() == 0) throw no_sphere_left_error(c, stepper, "below the rim");
-  return sample_at_rest(world.particles, c.particle.density);
-}
-
 }  // namespace
 
 OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
@@ -66,7 +44,15 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   // --- preparation: a settled sample at rest, new or from a packing file --------------
   StageClock prep_clock("settling");
   if (o.packing_file.empty()) {
-    world.particles = settled_sample_at_rest(c, r, progress, prep_clock);
+    World settling_world;  // the sample settles in a world of its own, handed on at rest
+    build_oedometer_container(settling_world, o);
+    NewSample s = settle_new_sample(
+        settling_world, c,
+        GenerationRegion::vertical_cylinder(Vec3::Zero(), 0.5 * o.cylinder_diameter, o.generation_height),
+        "oedometer.generation_height", o.cylinder_height, "below the rim", progress, prep_clock);
+    world.particles = std::move(s.at_rest);
+    r.particles_generated = s.generated;
+    r.settling = s.settling;
   } else {
     world.particles = sample_from_packing(o.packing_file, "oedometer.packing_file", c.particle.density);
     r.particles_generated = world.particles.size();

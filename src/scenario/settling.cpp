@@ -60,6 +60,21 @@ SettleResult settle_generated_sample(World& world, Stepper& stepper, const Sampl
                 static_cast<std::uint64_t>(sample.settle_check_interval), progress);
 }
 
+NewSample settle_new_sample(World& world, const RunConfig& c, const GenerationRegion& region,
+                            const std::string& height_key, double rim, const std::string& where, Progress& progress,
+                            StageClock& clock) {
+  Stepper stepper(make_physics(c));
+  NewSample s;
+  s.generated = place_generated_sample(world, c, region, height_key);
+  s.settling = settle_generated_sample(world, stepper, c.sample, progress);
+  clock.count_steps(s.settling.steps, s.generated);
+  discard_above(world, stepper, rim);
+  store_in_space_order(world, stepper);
+  if (world.particles.size() == 0) throw no_sphere_left_error(c, stepper, where);
+  s.at_rest = sample_at_rest(world.particles, c.particle.density);
+  return s;
+}
+
 ConfigError no_sphere_left_error(const RunConfig& c, const Stepper& stepper, const std::string& where) {
   const double critical = stepper.critical_time_step_at_prepare();
   if (stepper.fixed_time_step_too_large())

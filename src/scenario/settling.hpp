@@ -8,7 +8,9 @@
 #include "config/config_error.hpp"
 #include "config/run_config.hpp"
 #include "engine/stepper.hpp"
+#include "core/stage_timing.hpp"
 #include "io/progress.hpp"
+#include "scenario/generation.hpp"
 
 namespace colza {
 
@@ -30,6 +32,23 @@ SettleResult settle(World& world, Stepper& stepper, double threshold, double max
 // gravity to the [sample] criterion (settle_unbalanced_force, settle_max_time,
 // settle_check_interval) without an energy ledger (none is reported for settling).
 SettleResult settle_generated_sample(World& world, Stepper& stepper, const SampleSpec& sample, Progress& progress);
+
+// A new sample, the same steps for the oedometer and the shear box: generated in `region` of
+// `world` (its container built; `height_key` names the generation height for the error when
+// not all spheres fit), settled (settle_generated_sample, its steps counted on `clock`), cut
+// at `rim` (z, m: discard_above), stored in space order, then handed on at rest (no
+// velocities, spins or contact histories: sample_at_rest), which is exactly the sample its
+// packing file gives back. So a run from the `packing.txt` a run wrote repeats that run's
+// test bit for bit, and the YADE cross-check, which reads the packing file, starts from the
+// state colza's own runs start from. Throws no_sphere_left_error (`where`) if none is left.
+struct NewSample {
+  ParticleArrays at_rest;
+  std::size_t generated = 0;
+  SettleResult settling;
+};
+NewSample settle_new_sample(World& world, const RunConfig& c, const GenerationRegion& region,
+                            const std::string& height_key, double rim, const std::string& where, Progress& progress,
+                            StageClock& clock);
 
 // The error for a sample with no sphere left in its container after settling (`where`:
 // "below the rim"). With a fixed time step above the critical estimate of the stage's start

@@ -104,20 +104,16 @@ ShearSample prepare_shear_sample(const RunConfig& c, Progress& progress) {
     s.settling.converged = true;
     return s;
   }
-  Stepper stepper(make_physics(c));
   World world;
   build_shear_box(world, b, b.generation_height);
   StageClock clock("settling");
-  s.generated = place_generated_sample(world, c,
-                                       GenerationRegion::box(Vec3::Zero(), Vec3(b.length, b.width, b.generation_height)),
-                                       "shear_box.generation_height");
-  s.settling = settle_generated_sample(world, stepper, c.sample, progress);
-  clock.count_steps(s.settling.steps, s.generated);
-  discard_above(world, stepper, b.height);
-  store_in_space_order(world, stepper);
+  NewSample fresh = settle_new_sample(world, c,
+                                      GenerationRegion::box(Vec3::Zero(), Vec3(b.length, b.width, b.generation_height)),
+                                      "shear_box.generation_height", b.height, "below the box top", progress, clock);
+  s.particles = std::move(fresh.at_rest);
+  s.generated = fresh.generated;
+  s.settling = fresh.settling;
   s.stages.push_back(clock.finish());
-  if (world.particles.size() == 0) throw no_sphere_left_error(c, stepper, "below the box top");
-  s.particles = sample_at_rest(world.particles, c.particle.density);
   return s;
 }
 
