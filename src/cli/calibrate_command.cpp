@@ -1,7 +1,5 @@
 #include "cli/calibrate_command.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -19,6 +17,7 @@
 #include "config/config_error.hpp"
 #include "core/unstable_motion.hpp"
 #include "core/version.hpp"
+#include "io/fingerprint.hpp"
 #include "io/format_number.hpp"
 #include "io/output_dir.hpp"
 #include "io/summary.hpp"
@@ -102,9 +101,6 @@ std::vector<std::string> warnings_about_runs(const DemModel& dem, const fs::path
 // A folder named runs of the user's is not one: resuming there would replace a report.md
 // beside it without --force.
 bool holds_a_stopped_calibration(const fs::path& out) {
-  const auto is_fingerprint = [](const std::string& s) {
-    return s.size() == 16 && std::all_of(s.begin(), s.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); });
-  };
   std::error_code ec;
   const fs::path runs = out / "runs";
   if (!fs::is_directory(runs, ec)) return false;
@@ -112,7 +108,8 @@ bool holds_a_stopped_calibration(const fs::path& out) {
   for (fs::directory_iterator it(runs, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
     if (is_staging_folder(it->path())) continue;
-    const bool design_run = is_fingerprint(name) || (name.rfind("sample-", 0) == 0 && is_fingerprint(name.substr(7)));
+    const bool design_run =
+        is_fingerprint_text(name) || (name.rfind("sample-", 0) == 0 && is_fingerprint_text(name.substr(7)));
     if (!design_run || !fs::is_directory(it->path(), ec)) return false;
     any_run = true;
   }

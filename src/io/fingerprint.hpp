@@ -17,6 +17,15 @@ inline std::string fingerprint_text(const std::string& text) {
   return buf;
 }
 
+// Whether `s` has the form fingerprint_text gives: 16 lowercase hex digits (a calibration's
+// design run folders are named so).
+inline bool is_fingerprint_text(const std::string& s) {
+  if (s.size() != 16) return false;
+  for (char ch : s)
+    if (!((ch >= '0' && ch <= '9') || (ch >= 'a' && ch <= 'f'))) return false;
+  return true;
+}
+
 // A line for a fingerprint's text that stands for the contents of `file` (a packing file a
 // run loads): a file replaced under the same path then makes other runs, where its path
 // alone would have reused the runs made from the old contents. "" for no file.

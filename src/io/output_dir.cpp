@@ -23,16 +23,32 @@ namespace {
 // Staging folders are named .colza-partial-<host>-<pid> (staging_prefix).
 constexpr const char* kStagingPrefix = ".colza-partial-";
 
-// Whether `file` is a JSON object colza wrote with one of `keys` (its own summary.json or
-// sample.json), read without throwing.
-bool written_by_colza(const fs::path& file, std::initializer_list<const char*> keys) {
+// `file` as a JSON object, read without throwing; an empty object if it is missing or not one.
+nlohmann::json json_object_or_empty(const fs::path& file) {
   std::ifstream in(file);
-  if (!in) return false;
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-  if (!j.is_object()) return false;
+  if (!in) return nlohmann::json::object();
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  return j.is_object() ? j : nlohmann::json::object();
+}
+
+// Whether `file` is a JSON object colza wrote with one of `keys` (its own summary.json or
+// sample.json).
+bool written_by_colza(const fs::path& file, std::initializer_list<const char*> keys) {
+  const nlohmann::json j = json_object_or_empty(file);
   for (const char* k : keys)
     if (j.contains(k)) return true;
   return false;
+}
+
+// The command whose result `dir` holds, read from its summary.json: "run <scenario>" (a
+// `colza run` result names its scenario), "calibrate <stage>" (a calibration's names its
+// stage and mode), or "" (none, or not colza's).
+std::string earlier_result_command(const fs::path& dir) {
+  const nlohmann::json j = json_object_or_empty(dir / "summary.json");
+  if (j.contains("scenario") && j["scenario"].is_string()) return "run " + j["scenario"].get<std::string>();
+  if (j.contains("stage") && j["stage"].is_string() && j.contains("mode"))
+    return "calibrate " + j["stage"].get<std::string>();
+  return "";
 }
 
 // Flushes a file's (or a folder's entries') data to the disk, so that a rename that makes it
@@ -92,17 +108,6 @@ std::vector<std::string> earlier_run_outputs(const fs::path& dir) {
   }
   std::sort(names.begin(), names.end());
   return names;
-}
-
-std::string earlier_result_command(const fs::path& dir) {
-  std::ifstream in(dir / "summary.json");
-  if (!in) return "";
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-  if (!j.is_object()) return "";
-  if (j.contains("scenario") && j["scenario"].is_string()) return "run " + j["scenario"].get<std::string>();
-  if (j.contains("stage") && j["stage"].is_string() && j.contains("mode"))
-    return "calibrate " + j["stage"].get<std::string>();
-  return "";
 }
 
 void refuse_another_commands_result(const fs::path& dir, const std::string& command) {

@@ -63,11 +63,6 @@ void check_output_dir(const std::filesystem::path& dir, bool overwrite, const st
 // --force replaces the result.
 std::vector<std::string> earlier_run_outputs(const std::filesystem::path& dir);
 
-// The command whose result `dir` holds, read from its summary.json: "run <scenario>" (a
-// `colza run` result names its scenario), "calibrate <stage>" (a calibration's names its
-// stage), or "" (none, or not colza's). --force replaces a result of its own command only.
-std::string earlier_result_command(const std::filesystem::path& dir);
-
 // Throws ConfigError naming "--out DIR" when `dir` holds another command's result than
 // `command` ("run" or "calibrate"): --force would leave that result's other files (a run's
 // curve and packing, a calibration's report and runs/) beside the new one.
