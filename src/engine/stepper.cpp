@@ -1,9 +1,9 @@
+// The stepper's hot half: the force loops (serial, batched and threaded) and the two halves of a
+// step. The time step and the stability checks are in engine/stepper_stability.cpp.
 #include "engine/stepper.hpp"
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <string>
 #include <type_traits>
 #include <variant>
 
@@ -14,8 +14,6 @@
 #include "contact/contact_law.hpp"
 #include "core/concurrent.hpp"
 #include "core/interrupt.hpp"
-#include "core/unstable_motion.hpp"
-#include "engine/motion_limits.hpp"
 #include "engine/force_outputs.hpp"
 #include "engine/force_partition.hpp"
 #include "engine/pair_batch.hpp"
@@ -30,86 +28,6 @@ Stepper::Stepper(PhysicsSettings physics)
     : physics_(std::move(physics)),
       pairs_(physics_.particle_materials, physics_.wall_materials, physics_.stiffness_rule, physics_.wall_friction),
       neighbours_(physics_.skin) {}
-
-void Stepper::prepare(World& world) {
-  require_finite_positions(world);
-  rebuild_neighbours(world);
-  // Evaluated whatever the dt setting: a fixed dt is judged against it if the motion blows up.
-  critical_dt_at_prepare_ = critical_time_step(world.particles, world.walls, world.contacts, pairs_,
-                                               CountedContacts::kTouchingOrOverlapping);
-  prepared_at_time_ = world.time;
-  set_time_step(world, critical_dt_at_prepare_);
-}
-
-namespace {
-
-// What an unstable-motion message says about the time step, and what to change.
-std::string time_step_advice(const World& world, const TimeStepSettings& ts, double critical_dt_at_prepare) {
-  char text[400];
-  std::snprintf(text, sizeof text,
-                "The time step is %.6g s (%s) against a critical estimate of %.6g s at the start of the stage; %s",
-                world.dt, ts.automatic ? "automatic" : "fixed by integration.time_step", critical_dt_at_prepare,
-                ts.automatic ? "lower integration.safety_factor, or check the stiffnesses, densities and radii"
-                             : "lower integration.time_step below the critical estimate");
-  return text;
-}
-
-}  // namespace
-
-void Stepper::require_finite_positions(const World& world) const {
-  const std::optional<std::size_t> i = first_non_finite_position(world.particles);
-  if (!i) return;
-  char text[240];
-  std::snprintf(text, sizeof text, "the motion became unstable: particle %zu has a non-finite position at step %llu (t = %.6g s). ",
-                *i, static_cast<unsigned long long>(world.step), world.time);
-  throw UnstableMotion(text + time_step_advice(world, physics_.time_step, critical_dt_at_prepare_),
-                       fixed_time_step_too_large());
-}
-
-void Stepper::require_sound_state(const World& world) const {
-  require_finite_positions(world);
-  require_bounded_speeds(world);
-  const DeepestOverlap d = deepest_overlap(world.particles, world.walls, world.contacts, pairs_);
-  if (!(d.ratio > kOverlapLimit)) return;
-  char pair[96], text[400];
-  if (d.with_wall) std::snprintf(pair, sizeof pair, "particle %zu and wall '%s'", d.first, world.walls[d.second].name.c_str());
-  else std::snprintf(pair, sizeof pair, "particles %zu and %zu", d.first, d.second);
-  std::snprintf(text, sizeof text,
-                "the motion became unstable, or the contacts are far too soft for the load: %s overlap by %.3g m, "
-                "%.0f %% of %s radius, at step %llu (t = %.6g s): spheres passing through each other, which no contact "
-                "model describes. ",
-                pair, d.overlap, 100.0 * d.ratio, d.with_wall ? "the particle's" : "the smaller",
-                static_cast<unsigned long long>(world.step), world.time);
-  throw UnstableMotion(text + time_step_advice(world, physics_.time_step, critical_dt_at_prepare_) +
-                           "; or raise the stiffnesses",
-                       fixed_time_step_too_large());
-}
-
-void Stepper::require_bounded_speeds(const World& world) const {
-  // A free fall since the stage began gives at most |g| t (damping only slows it), plus
-  // 10 m/s for a particle thrown in a scene or by a wall.
-  const double free_flight_speed = physics_.integrator.gravity.norm() * (world.time - prepared_at_time_) + 10.0;
-  const FastestParticle f = fastest_particle(world.particles, world.contacts, world.dt, free_flight_speed);
-  if (!(f.ratio > kStepLimit)) return;
-  char text[320];
-  std::snprintf(text, sizeof text,
-                "the motion became unstable: particle %zu moves %.3g m/s, %.3g times its radius in one step, at step %llu "
-                "(t = %.6g s), so it could pass through a neighbour between two force evaluations. ",
-                f.index, f.speed, f.ratio, static_cast<unsigned long long>(world.step), world.time);
-  throw UnstableMotion(text + time_step_advice(world, physics_.time_step, critical_dt_at_prepare_),
-                       fixed_time_step_too_large());
-}
-
-void Stepper::update_time_step(World& world, CountedContacts counted) {
-  set_time_step(world, physics_.time_step.automatic
-                           ? critical_time_step(world.particles, world.walls, world.contacts, pairs_, counted)
-                           : 0.0);
-}
-
-void Stepper::set_time_step(World& world, double critical) {
-  world.dt = physics_.time_step.automatic ? physics_.time_step.safety_factor * critical : physics_.time_step.fixed_dt;
-  time_step_set_at_ = world.step;
-}
 
 namespace {
 

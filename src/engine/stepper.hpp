@@ -3,6 +3,7 @@
 //   -> leapfrog integration with local damping -> walls move -> clock advances.
 #pragma once
 #include <optional>
+#include <string>
 #include <vector>
 #include "engine/energy.hpp"
 #include "engine/force_partition.hpp"
@@ -105,6 +106,9 @@ class Stepper {
   void compute_forces(World& world);
   void require_finite_positions(const World& world) const;
   void require_bounded_speeds(const World& world) const;
+  // Throws UnstableMotion: `what` happened, then what the time step was against the critical
+  // estimate at prepare() and what to change, then `remedy` (e.g. "; or raise the stiffnesses").
+  [[noreturn]] void throw_unstable_motion(const World& world, const std::string& what, const char* remedy = "") const;
   // world.dt = safety factor x `critical` (automatic), or the fixed dt (`critical` unused).
   void set_time_step(World& world, double critical);
   PhysicsSettings physics_;
