@@ -178,9 +178,8 @@ int calibrate_command(const CalibrateOptions& opt) {
           throw ConfigError(opt.spec_path, "stage", "the spec is for stage \"" + std::string(to_string(spec.stage)) +
                                                         "\", the command asked for \"" + opt.stage + "\"");
         validate_problem(spec.problem, opt.mode == "sequential");
-        check_output_dir(opt.out_dir, opt.force,  // a stopped calibration is resumed
+        check_output_dir(opt.out_dir, opt.force, "calibrate",  // a stopped calibration is resumed
                          holds_a_stopped_calibration(opt.out_dir) ? "runs" : "");
-        if (opt.force) refuse_another_commands_result(opt.out_dir, "calibrate");
         make_output_folders(opt.out_dir, runs_folder(opt), !opt.runs_dir.empty());
       }))
     return code;

@@ -137,8 +137,7 @@ int run_command(const RunOptions& opt) {
     if (opt.out_dir.empty()) throw ConfigError("--out", "", "an output directory is required");
     if (scenario == Scenario::kShear && !series && !(opt.normal_stress > 0.0))
       throw ConfigError("--normal-stress", "", "`colza run shear` needs --normal-stress PA (> 0)");
-    check_output_dir(opt.out_dir, opt.force, series ? "sample.json" : "");  // a stopped series is resumed
-    if (opt.force) refuse_another_commands_result(opt.out_dir, "run");
+    check_output_dir(opt.out_dir, opt.force, "run", series ? "sample.json" : "");  // a stopped series is resumed
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "colza: error: %s\n", e.what());
     return 2;

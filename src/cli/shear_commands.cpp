@@ -183,7 +183,7 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   const fs::path dir(opt.out_dir);
   // A finished series is not overwritten without --force; an unfinished one (its
   // sample.json) is resumed.
-  check_output_dir(dir, opt.force, "sample.json");
+  check_output_dir(dir, opt.force, "run", "sample.json");
   std::vector<std::string> load_names;
   for (double sigma : config.shear_box.normal_stresses) load_names.push_back(load_label(sigma));
   SeriesOutput out(dir, opt.force, load_names);

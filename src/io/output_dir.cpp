@@ -69,7 +69,11 @@ constexpr const char* kRunFiles[] = {"summary.json", "sample.json", "packing.txt
 
 bool is_staging_folder(const fs::path& entry) { return entry.filename().string().rfind(kStagingPrefix, 0) == 0; }
 
-void check_output_dir(const fs::path& dir, bool overwrite, const std::string& unfinished_marker) {
+namespace {
+
+// check_output_dir without the command's part: OutputStaging's check, for folders whose
+// command is settled (the caller checked --out; design runs and series loads are colza's own).
+void check_output_folder(const fs::path& dir, bool overwrite, const std::string& unfinished_marker) {
   const std::string name = "--out " + dir.string();
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) throw ConfigError(name, "", "exists and is not a directory");
@@ -92,6 +96,25 @@ void check_output_dir(const fs::path& dir, bool overwrite, const std::string& un
                             "into it (files of the same name are replaced)");
 }
 
+// Throws ConfigError naming "--out DIR" when `dir` holds another command's result than
+// `command` ("run" or "calibrate"): --force would leave that result's other files (a run's
+// curve and packing, a calibration's report and runs/) beside the new one.
+void refuse_another_commands_result(const fs::path& dir, const std::string& command) {
+  const std::string earlier = earlier_result_command(dir);
+  if (earlier.empty() || earlier.rfind(command + " ", 0) == 0) return;
+  throw ConfigError("--out " + dir.string(), "",
+                    "holds the result of `colza " + earlier + "`: --force replaces an earlier result of `colza " +
+                        command + "` only; choose another --out");
+}
+
+}  // namespace
+
+void check_output_dir(const fs::path& dir, bool overwrite, const std::string& command,
+                      const std::string& unfinished_marker) {
+  check_output_folder(dir, overwrite, unfinished_marker);
+  if (overwrite) refuse_another_commands_result(dir, command);
+}
+
 std::vector<std::string> earlier_run_outputs(const fs::path& dir) {
   std::error_code ec;
   std::vector<std::string> names;
@@ -108,14 +131,6 @@ std::vector<std::string> earlier_run_outputs(const fs::path& dir) {
   }
   std::sort(names.begin(), names.end());
   return names;
-}
-
-void refuse_another_commands_result(const fs::path& dir, const std::string& command) {
-  const std::string earlier = earlier_result_command(dir);
-  if (earlier.empty() || earlier.rfind(command + " ", 0) == 0) return;
-  throw ConfigError("--out " + dir.string(), "",
-                    "holds the result of `colza " + earlier + "`: --force replaces an earlier result of `colza " +
-                        command + "` only; choose another --out");
 }
 
 void write_atomically(const fs::path& file, const std::function<void(const std::string& tmp)>& write) {
@@ -178,7 +193,7 @@ void remove_abandoned_staging(const fs::path& dir, const std::string& prefix) {
 }  // namespace
 
 OutputStaging::OutputStaging(const fs::path& dir, bool overwrite) : dir_(dir) {
-  check_output_dir(dir, overwrite);
+  check_output_folder(dir, overwrite, "");
   std::error_code ec;
   if (!fs::exists(dir, ec)) {
     fs::create_directories(dir, ec);

@@ -50,11 +50,13 @@ void write_text_atomically(const std::filesystem::path& file, const std::string&
 // of one killed before it finished.
 bool is_staging_folder(const std::filesystem::path& entry);
 
-// Checks the output directory without creating anything (for early validation). Unless
-// `overwrite` (--force), a directory that holds a summary.json, or any file but staging
-// folders, is refused; one that holds `unfinished_marker` (e.g. a series' sample.json) is
-// accepted, to be resumed.
-void check_output_dir(const std::filesystem::path& dir, bool overwrite, const std::string& unfinished_marker = "");
+// Checks the output directory of `command` ("run" or "calibrate") without creating anything
+// (for early validation). Unless `overwrite` (--force), a directory that holds a
+// summary.json, or any file but staging folders, is refused; one that holds
+// `unfinished_marker` (e.g. a series' sample.json) is accepted, to be resumed. With
+// `overwrite`, another command's result is refused (refuse_another_commands_result).
+void check_output_dir(const std::filesystem::path& dir, bool overwrite, const std::string& command,
+                      const std::string& unfinished_marker = "");
 
 // The entries of an earlier `colza run` result in dir: its summary.json and sample.json,
 // packing.txt, curve.csv, series.csv, result.h5 and load-<sigma>Pa folders holding a
@@ -62,10 +64,5 @@ void check_output_dir(const std::filesystem::path& dir, bool overwrite, const st
 // colza_version or config_fingerprint); none otherwise. For OutputStaging::commit when
 // --force replaces the result.
 std::vector<std::string> earlier_run_outputs(const std::filesystem::path& dir);
-
-// Throws ConfigError naming "--out DIR" when `dir` holds another command's result than
-// `command` ("run" or "calibrate"): --force would leave that result's other files (a run's
-// curve and packing, a calibration's report and runs/) beside the new one.
-void refuse_another_commands_result(const std::filesystem::path& dir, const std::string& command);
 
 }  // namespace colza
