@@ -165,7 +165,8 @@ Problem shear_problem() {
 
 // Planes close to what the full-size box gives at the paper's 30 mm protocol (session 6,
 // the five design runs of data/calibration/shear.toml): C = -1600 + 2567 Cn + 80 Cs (Pa),
-// tan(Phi) = 0.45 - 0.027 Cn - 0.005 Cs.
+// tan(Phi) = 0.45 - 0.027 Cn - 0.005 Cs. They are the tests' input, rounded: every expected
+// value below is derived from these coefficients, not from the runs.
 Eigen::VectorXd full_box_planes(const Eigen::VectorXd& x) {
   return Eigen::Vector2d(-1600.0 + 2567.0 * x[0] + 80.0 * x[1], 0.45 - 0.027 * x[0] - 0.005 * x[1]);
 }
@@ -361,6 +362,8 @@ TEST(CalibrationIdentity, AParameterTheTargetsHardlyFeelIsReportedAsNotDetermine
   const std::string cn = warning_starting_with(r, "Cn is not determined");
   EXPECT_NE(cs.find("its 95 % interval, +/- 2 sigma = +/- 8.1"), std::string::npos) << cs;
   EXPECT_NE(cs.find("design range 2 .. 4 N"), std::string::npos) << cs;
+  // Across Cs's range (2 N) the planes move cohesion by 2 x 80 = 160 Pa, 160 / 550 = 0.290909
+  // uncertainties, and tan_phi by 2 x 0.005 = 0.01, 0.01 / 0.016 = 0.625 uncertainties.
   EXPECT_NE(cs.find("cohesion by 160 Pa (0.290909 uncertainties), tan_phi by 0.01 - (0.625 uncertainties)"),
             std::string::npos) << cs;
   EXPECT_TRUE(cn.empty()) << cn;

@@ -36,9 +36,9 @@ TEST(CrosscheckEnsembleStats, SummarisesWithTheSampleStandardDeviation) {
 
 // Means 10 and 7, standard errors 3 and 4 of 4 runs each: difference 3, se 5, t 0.6;
 // Welch-Satterthwaite df = 25^2 / (9^2 / 3 + 16^2 / 3) = 1875 / 337; p = 2 P(T > 0.6) under
-// Student's t with that df = 0.57211 (the density integrated numerically from 0.6 to infinity,
-// in Python, independently of Boost). With a large df, p tends to the normal two-sided value
-// 2 (1 - Phi(0.6)) = 0.548506.
+// Student's t with that df = 0.57211 (tests/unit/student_t_reference.py integrates the
+// density, independently of Boost, and prints it). With a large df, p tends to the normal
+// two-sided value 2 (1 - Phi(0.6)) = 0.548506.
 TEST(CrosscheckEnsembleStats, WelchStatisticOfTwoMeans) {
   const SampleSummary colza{4, 10.0, 6.0, 3.0}, yade{4, 7.0, 8.0, 4.0};
   const auto d = difference_of_means(colza, yade);
@@ -60,9 +60,9 @@ TEST(CrosscheckEnsembleStats, WelchStatisticOfTwoMeans) {
   EXPECT_TRUE(std::isnan(difference_of_means(one, summarise({1, 2, 3, 4})).p));
 }
 
-// t = 2 with 10 degrees of freedom: two-sided p = 0.073388 (integrated as above; tables of
-// Student's t bracket it: the two-sided 0.05 critical value at df 10 is 2.228, the 0.10 one
-// 1.812).
+// t = 2 with 10 degrees of freedom: two-sided p = 0.073388 (student_t_reference.py, by the
+// integral and by the closed form for an even df; tables of Student's t bracket it: the
+// two-sided 0.05 critical value at df 10 is 2.228, the 0.10 one 1.812).
 TEST(CrosscheckEnsembleStats, TwoSidedPValueOfStudentsT) {
   // Two groups of 11 runs with equal standard errors: df = (2 v)^2 / (2 v^2 / 10) = 20; to get
   // df = 10 use one group without scatter: df = v^2 / (v^2 / 10) = 10.

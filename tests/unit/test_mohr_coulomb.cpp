@@ -23,8 +23,10 @@ TEST(MohrCoulomb, RecoversAKnownLineExactly) {
 
 TEST(MohrCoulomb, TwoLoadsGiveAnR2OfExactlyOne) {
   // r^2 = Sxy^2 / (Sxx Syy) is 1 for any two points, but rounded it comes out at
-  // 1.0000000000000002 for these (found by evaluating the sums in IEEE doubles in Python);
-  // an r^2 above 1 is not a coefficient of determination, so the fit caps it.
+  // 1.0000000000000002 for these (tests/unit/mohr_coulomb_r2_reference.py evaluates the sums
+  // in the fit's order in IEEE doubles, prints that value and can search for another pair if
+  // the fit's order of sums changes); an r^2 above 1 is not a coefficient of determination,
+  // so the fit caps it.
   const auto fit = fit_mohr_coulomb({25750.0, 78750.0}, {32913.238569298424, 30202.761029576868});
   EXPECT_EQ(fit.r2, 1.0);
 }
