@@ -3,7 +3,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
+#include <type_traits>
 
 #include "io/input_file.hpp"
 
@@ -96,9 +98,46 @@ std::string ConfigReader::origin_of(const std::string& full_key) const {
   return source_;
 }
 
+namespace {
+
+// The table at the dotted path `table_path` of `doc` ("scene.particles[1]": member 1 of the
+// array of tables scene.particles), made where absent; null where the path names a value or
+// a member that does not exist.
+toml::table* table_at(toml::table& doc, const std::string& table_path) {
+  toml::table* t = &doc;
+  std::size_t start = 0;
+  while (t && start < table_path.size()) {
+    const std::size_t dot = table_path.find('.', start);
+    std::string part = table_path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    start = dot == std::string::npos ? table_path.size() : dot + 1;
+    std::optional<std::size_t> index;
+    if (const std::size_t open = part.find('['); open != std::string::npos) {
+      index = std::stoul(part.substr(open + 1));
+      part = part.substr(0, open);
+    }
+    if (!t->contains(part)) t->insert(part, toml::table{});
+    toml::node* n = t->get(part);
+    if (index) {
+      toml::array* a = n->as_array();
+      n = a && *index < a->size() ? a->get(*index) : nullptr;
+    }
+    t = n ? n->as_table() : nullptr;
+  }
+  return t;
+}
+
+}  // namespace
+
 std::string ConfigReader::resolved_text() const {
+  toml::table resolved = document_;
+  for (const auto& [full_key, value] : defaults_used_) {
+    const std::size_t dot = full_key.rfind('.');
+    toml::table* t = dot == std::string::npos ? &resolved : table_at(resolved, full_key.substr(0, dot));
+    const std::string key = dot == std::string::npos ? full_key : full_key.substr(dot + 1);
+    if (t && !t->contains(key)) t->insert(key, *value.get("v"));
+  }
   std::ostringstream s;
-  s << document_;
+  s << resolved;
   return s.str();
 }
 
@@ -142,6 +181,22 @@ const toml::node* ConfigNode::find(const std::string& key) const {
   return n;
 }
 
+template <class T>
+T ConfigNode::use_default(const std::string& key, const T& fallback) const {
+  toml::table value;
+  if constexpr (std::is_same_v<T, Vec3>) {
+    value.insert("v", toml::array{fallback.x(), fallback.y(), fallback.z()});
+  } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+    toml::array a;
+    for (double x : fallback) a.push_back(x);
+    value.insert("v", std::move(a));
+  } else {
+    value.insert("v", fallback);
+  }
+  reader_->defaults_used_.emplace_back(full(key), std::move(value));
+  return fallback;
+}
+
 bool ConfigNode::has(const std::string& key) const { return table_ && table_->contains(key); }
 
 bool ConfigNode::is_string(const std::string& key) const {
@@ -150,7 +205,7 @@ bool ConfigNode::is_string(const std::string& key) const {
 
 double ConfigNode::number(const std::string& key, double fallback) const {
   const toml::node* n = find(key);
-  if (!n) return fallback;
+  if (!n) return use_default(key, fallback);
   if (auto v = n->value_exact<double>()) {
     if (!std::isfinite(*v)) fail(key, "must be a finite number");
     return *v;
@@ -180,7 +235,7 @@ double ConfigNode::number_in(const std::string& key, double fallback, double lo,
 
 std::int64_t ConfigNode::integer(const std::string& key, std::int64_t fallback, std::int64_t min_value) const {
   const toml::node* n = find(key);
-  if (!n) return fallback;
+  if (!n) return use_default(key, fallback);
   auto v = n->value_exact<std::int64_t>();
   if (!v) fail(key, "expected an integer, got " + describe(*n));
   if (*v < min_value) fail(key, "must be at least " + std::to_string(min_value) + ", got " + std::to_string(*v));
@@ -189,7 +244,7 @@ std::int64_t ConfigNode::integer(const std::string& key, std::int64_t fallback, 
 
 bool ConfigNode::boolean(const std::string& key, bool fallback) const {
   const toml::node* n = find(key);
-  if (!n) return fallback;
+  if (!n) return use_default(key, fallback);
   auto v = n->value_exact<bool>();
   if (!v) fail(key, "expected true or false, got " + describe(*n));
   return *v;
@@ -197,7 +252,7 @@ bool ConfigNode::boolean(const std::string& key, bool fallback) const {
 
 std::string ConfigNode::string(const std::string& key, const std::string& fallback) const {
   const toml::node* n = find(key);
-  if (!n) return fallback;
+  if (!n) return use_default(key, fallback);
   auto v = n->value_exact<std::string>();
   if (!v) fail(key, "expected a string, got " + describe(*n));
   return *v;
@@ -215,7 +270,7 @@ std::string ConfigNode::choice(const std::string& key, const std::string& fallba
 
 Vec3 ConfigNode::vec3(const std::string& key, const Vec3& fallback) const {
   const toml::node* n = find(key);
-  if (!n) return fallback;
+  if (!n) return use_default(key, fallback);
   const toml::array* a = n->as_array();
   if (!a || a->size() != 3) fail(key, "expected an array of 3 numbers, got " + describe(*n));
   Vec3 v;
@@ -256,6 +311,10 @@ std::vector<double> ConfigNode::number_list(const std::string& key) const {
     if (!std::isfinite(out.back())) fail(key, "every entry must be a finite number, got " + format_number(out.back()));
   }
   return out;
+}
+
+std::vector<double> ConfigNode::number_list(const std::string& key, const std::vector<double>& fallback) const {
+  return has(key) ? number_list(key) : use_default(key, fallback);
 }
 
 ConfigNode ConfigNode::table(const std::string& key) const {

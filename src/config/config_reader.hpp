@@ -32,6 +32,7 @@ class ConfigNode {
   Vec3 vec3(const std::string& key, const Vec3& fallback) const;
   std::vector<std::int64_t> integer_list(const std::string& key) const;
   std::vector<double> number_list(const std::string& key) const;
+  std::vector<double> number_list(const std::string& key, const std::vector<double>& fallback) const;
   bool has(const std::string& key) const;
   bool is_string(const std::string& key) const;
   ConfigNode table(const std::string& key) const;              // empty view if absent
@@ -45,6 +46,9 @@ class ConfigNode {
   ConfigNode(const ConfigReader* reader, const toml::table* table, std::string path)
       : reader_(reader), table_(table), path_(std::move(path)) {}
   const toml::node* find(const std::string& key) const;
+  // Records that `key` was absent and `fallback` used: resolved_text() writes it.
+  template <class T>
+  T use_default(const std::string& key, const T& fallback) const;
   std::string full(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
   const ConfigReader* reader_;
   const toml::table* table_;  // may be null (absent table)
@@ -62,7 +66,10 @@ class ConfigReader {
   void apply_override(const std::string& assignment);
   ConfigNode root() const { return ConfigNode(this, &document_, ""); }
   void reject_unknown_keys() const;
-  // The document with overrides applied, as TOML text (stored with every result).
+  // The configuration as used, as TOML text (stored with every result): the document with
+  // overrides applied and, for every key read but absent, the default that was used. A run
+  // is then described in full whether its values came from the file, --set or the built-in
+  // defaults.
   std::string resolved_text() const;
   const std::string& source_name() const { return source_; }
   std::string origin_of(const std::string& full_key) const;
@@ -74,6 +81,9 @@ class ConfigReader {
   std::string source_;
   std::set<std::string> overridden_;
   mutable std::set<std::string> used_;
+  // Defaults used for absent keys, by full key ("scene.particles[1].radius"), each as a
+  // table {v = value}, in the order they were read.
+  mutable std::vector<std::pair<std::string, toml::table>> defaults_used_;
 };
 
 }  // namespace colza

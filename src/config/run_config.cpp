@@ -55,12 +55,12 @@ IntegrationSpec read_integration(const ConfigNode& t) {
   s.damping = t.number_in("damping", s.damping, 0.0, 0.999);
   s.damping_form = t.choice("damping_form", "pfc", {"pfc", "yade"}) == "pfc" ? DampingForm::kPfc : DampingForm::kYade;
   s.gravity = t.vec3("gravity", s.gravity);
-  if (t.is_string("time_step")) {
-    t.choice("time_step", "auto", {"auto"});
-    s.automatic_time_step = true;
-  } else if (t.has("time_step")) {
+  if (t.has("time_step") && !t.is_string("time_step")) {
     s.automatic_time_step = false;
     s.time_step = t.positive("time_step", 0.0);
+  } else {
+    t.choice("time_step", "auto", {"auto"});  // absent: "auto", recorded as used
+    s.automatic_time_step = true;
   }
   s.safety_factor = t.number_in("safety_factor", s.safety_factor, 1e-3, 1.0);
   s.recompute_interval = t.integer("recompute_interval", s.recompute_interval, 1);
@@ -106,16 +106,12 @@ ShearBoxSpec read_shear_box(const ConfigNode& t, const ParticleSpec& particle) {
   b.shear_plane = t.positive("shear_plane", b.shear_plane);
   b.rim_length = t.positive("rim_length", b.rim_length);
   b.generation_height = t.positive("generation_height", b.generation_height);
-  if (t.has("normal_stresses")) {
-    b.normal_stresses.clear();
-    for (double v : t.number_list("normal_stresses")) {
-      if (!(v > 0.0)) t.fail("normal_stresses", "every normal stress must be positive (Pa)");
-      b.normal_stresses.push_back(v);
-    }
-    if (b.normal_stresses.empty()) t.fail("normal_stresses", "needs at least one normal stress (Pa)");
-    if (const std::string clash = loads_sharing_a_label(b.normal_stresses); !clash.empty())
-      t.fail("normal_stresses", clash);
-  }
+  b.normal_stresses = t.number_list("normal_stresses", b.normal_stresses);
+  for (double v : b.normal_stresses)
+    if (!(v > 0.0)) t.fail("normal_stresses", "every normal stress must be positive (Pa)");
+  if (b.normal_stresses.empty()) t.fail("normal_stresses", "needs at least one normal stress (Pa)");
+  if (const std::string clash = loads_sharing_a_label(b.normal_stresses); !clash.empty())
+    t.fail("normal_stresses", clash);
   b.shear_speed = t.positive("shear_speed", b.shear_speed);
   b.shear_displacement = t.positive("shear_displacement", b.shear_displacement);
   b.strength_window_start = t.non_negative("strength_window_start", b.strength_window_start);

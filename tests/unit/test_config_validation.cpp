@@ -298,6 +298,33 @@ TEST(ConfigDefaults, DataFileEqualsBuiltInDefaults) {
   expect_same_numbers(from_file, member_defaults, "data/oedometer.toml vs RunConfig{}");
 }
 
+// The configuration stored with a result (result.h5's config_toml, a design run's
+// config.toml) states every value the run used, defaults included: a run of the built-in
+// defaults stores what a run of data/oedometer.toml stores (the file's title, and its
+// [contact.contact_bond] table, inactive with bond = "none", aside), and loading the stored
+// text gives the same configuration and the same text again.
+TEST(ConfigDefaults, ResolvedTextStatesEveryValueUsed) {
+  const std::string file = std::string(COLZA_SOURCE_DIR) + "/data/oedometer.toml";
+  const RunConfig from_file = load_run_config(Scenario::kOedometer, file, {});
+  const RunConfig builtin = load_run_config(Scenario::kOedometer, "", {});
+  toml::table a = toml::parse(from_file.resolved_toml), b = toml::parse(builtin.resolved_toml);
+  for (toml::table* t : {&a, &b}) {
+    t->erase("title");
+    t->erase("provenance");
+  }
+  a["contact"].as_table()->erase("contact_bond");
+  EXPECT_TRUE(a == b) << "data/oedometer.toml:\n" << a << "\n\nbuilt-in:\n" << b;
+  EXPECT_EQ(b["integration"]["time_step"].value_or(std::string()), "auto");
+  const RunConfig again = read_run_config(Scenario::kOedometer, ConfigReader::from_string(builtin.resolved_toml, "r.toml"));
+  expect_same_numbers(again, builtin, "the built-in defaults' resolved text, read back");
+  EXPECT_EQ(again.resolved_toml, builtin.resolved_toml);
+  // The shear box's loads, read only when given, are stated too.
+  const RunConfig shear = read_run_config(Scenario::kShear, ConfigReader::from_string("", "s.toml"));
+  const toml::table s = toml::parse(shear.resolved_toml);
+  ASSERT_TRUE(s["shear_box"]["normal_stresses"].is_array()) << s;
+  EXPECT_EQ(s["shear_box"]["normal_stresses"].as_array()->size(), shear.shear_box.normal_stresses.size());
+}
+
 TEST(ConfigDefaults, DefaultsAreThePapersTable1) {
   // physics.md section 5, Table 1 column, and section 4 (oedometer geometry and speed).
   const RunConfig c = load_run_config(Scenario::kOedometer, "", {});
