@@ -74,10 +74,16 @@ void write_result_h5(const std::string& file, const std::string& scenario, const
 }
 
 std::string settling_warning(const RunConfig& c, const SettleResult& settling) {
+  // Below the criterion, but too many spheres still touching nothing (settle()).
+  const bool still_falling = settling.mean_unbalanced_force < c.sample.settle_unbalanced_force;
+  const std::string state =
+      still_falling ? format_significant(100.0 * settling.share_touching_nothing, 3) +
+                          " % of the spheres touched nothing, against at most " +
+                          format_shortest(100.0 * kMaxShareTouchingNothing) + " % at rest"
+                    : "mean unbalanced force " + format_significant(settling.mean_unbalanced_force, 3) +
+                          " N against " + format_shortest(c.sample.settle_unbalanced_force) + " N";
   return "settling did not converge within sample.settle_max_time = " + format_shortest(c.sample.settle_max_time) +
-         " s (mean unbalanced force " + format_significant(settling.mean_unbalanced_force, 3) + " N against " +
-         format_shortest(c.sample.settle_unbalanced_force) +
-         " N): the sample was not at rest when its test began; raise sample.settle_max_time";
+         " s (" + state + "): the sample was not at rest when its test began; raise sample.settle_max_time";
 }
 
 }  // namespace colza

@@ -46,6 +46,7 @@ void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputSta
                    {"steps", r.settling.steps},
                    {"simulated_time", r.settling.simulated_time},
                    {"mean_unbalanced_force", r.settling.mean_unbalanced_force},
+                   {"share_touching_nothing", r.settling.share_touching_nothing},
                    {"threshold", c.sample.settle_unbalanced_force}};
   s["bond_install"] = to_string(c.contact.bond_install);
   s["bonds_installed"] = r.bonds_installed;

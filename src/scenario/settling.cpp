@@ -3,11 +3,35 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "io/format_number.hpp"
 #include "scenario/sample_preparation.hpp"
 
 namespace colza {
+
+namespace {
+
+// The share of the free particles with no touching contact, after a force pass.
+double share_touching_nothing(const World& world) {
+  const ParticleArrays& p = world.particles;
+  std::vector<std::uint8_t> touches(p.size(), 0);
+  const ParticlePairList& pairs = world.contacts.particle_pairs;
+  for (std::size_t k = 0; k < pairs.size(); ++k)
+    if (pairs.history[k].touching) touches[pairs.first[k]] = touches[pairs.second[k]] = 1;
+  const WallPairList& walls = world.contacts.wall_pairs;
+  for (std::size_t k = 0; k < walls.size(); ++k)
+    if (walls.history[k].touching) touches[walls.particle[k]] = 1;
+  std::size_t free = 0, alone = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.fixed[i]) continue;
+    ++free;
+    alone += touches[i] == 0;
+  }
+  return free > 0 ? static_cast<double>(alone) / static_cast<double>(free) : 0.0;
+}
+
+}  // namespace
 
 SettleResult settle(World& world, Stepper& stepper, double threshold, double max_time,
                     std::uint64_t check_interval, Progress& progress) {
@@ -30,8 +54,11 @@ SettleResult settle(World& world, Stepper& stepper, double threshold, double max
     if (check) {
       r.mean_unbalanced_force = stepper.last_integration().mean_unbalanced_force;
       if (r.mean_unbalanced_force < threshold) {
-        r.converged = true;
-        break;
+        r.share_touching_nothing = share_touching_nothing(world);
+        if (r.share_touching_nothing <= kMaxShareTouchingNothing) {
+          r.converged = true;
+          break;
+        }
       }
       if (world.time - t0 >= max_time) break;
       if (progress.active()) {
@@ -44,6 +71,7 @@ SettleResult settle(World& world, Stepper& stepper, double threshold, double max
       }
     }
   }
+  if (!r.converged) r.share_touching_nothing = share_touching_nothing(world);  // the last check's, for the warning
   stepper.set_integration_sums(caller_sums);
   stepper.set_between_halves(caller_between);
   stepper.require_sound_state(world);  // a blow-up within the last check interval, too

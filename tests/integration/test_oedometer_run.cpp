@@ -132,6 +132,22 @@ TEST_F(SmallOedometer, LoadingFromTheWrittenPackingRepeatsTheRunBitForBit) {
   EXPECT_EQ(s2["fit"], s["fit"]);
 }
 
+TEST_F(SmallOedometer, ASettlingCriterionIsNotJudgedWithoutSettling) {
+  // A criterion above the spheres' weight is refused when the run settles a sample
+  // (ConfigValidation.ASettlingCriterionAboveTheSphereWeightIsRefused), not when it loads a
+  // packing file: nothing settles then. 2 mm of travel keep the run short.
+  const fs::path out = scratch_dir("small-oedometer-criterion-unused");
+  fs::remove_all(out);
+  const std::string loose = " --set sample.settle_unbalanced_force=1.0 --set oedometer.max_piston_travel=0.002";
+  CliResult r = run_colza("run oedometer --quiet --config " + kConfig + loose + " --set oedometer.packing_file=" +
+                          (out_ / "packing.txt").string() + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 0) << r.stderr_text;
+  fs::remove_all(out);
+  r = run_colza("run oedometer --quiet --config " + kConfig + loose + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("key 'sample.settle_unbalanced_force'"), std::string::npos) << r.stderr_text;
+}
+
 TEST_F(SmallOedometer, ATimeStepFarAboveTheCriticalStopsTheRunInsteadOfWritingItsCurve) {
   // dt = 1 ms, ~100 times the critical estimate: the piston reaches the stop force within a
   // few steps, before any periodic check, with spheres driven metres into the walls. The

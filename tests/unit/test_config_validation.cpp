@@ -57,6 +57,29 @@ TEST(ConfigValidation, NegativeStiffnessIsNamed) {
   EXPECT_EQ(oedometer_error("[wall]\nfriction = -0.1\n").key(), "wall.friction");
 }
 
+TEST(ConfigValidation, ASettlingCriterionAboveTheSphereWeightIsRefused) {
+  // Mean weight rho g (pi / 6) E[d^3], E[d^3] = (dmax^4 - dmin^4) / (4 (dmax - dmin)).
+  // A density in g/cm^3: 1.25 kg/m^3, 6-7 mm: E[d^3] = (7^4 - 6^4) / 4 mm^3 = 276.25e-9 m^3,
+  // weight 1.25 x 9.81 x 0.5236 x 276.25e-9 = 1.77e-6 N, far below the oedometer's 1e-4 N.
+  const ConfigError e = oedometer_error("[particle]\ndensity = 1.25\n");
+  EXPECT_EQ(e.key(), "sample.settle_unbalanced_force");
+  EXPECT_NE(e.reason().find("0.0001 N is not below the weight of a sphere of the mean size, 1.77e-06 N"),
+            std::string::npos) << e.reason();
+  EXPECT_NE(e.reason().find("particle.density 1.25 kg/m^3"), std::string::npos) << e.reason();
+  // 4.5-5.5 mm seeds of 1230 kg/m^3 at the shear box's 1e-3 N: E[d^3] = (5.5^4 - 4.5^4) / 4
+  // mm^3 = 126.25e-9 m^3, weight 1230 x 9.81 x 0.5236 x 126.25e-9 = 7.98e-4 N: refused. The
+  // paper's 6-7 mm seeds weigh 1.75e-3 N: accepted.
+  const std::string small_seeds = "[particle]\ndensity = 1230.0\ndiameter_min = 0.0045\ndiameter_max = 0.0055\n"
+                                  "[sample]\nsettle_unbalanced_force = 1e-3\n";
+  const ConfigError shear = expect_config_error(
+      [&] { read_run_config(Scenario::kShear, ConfigReader::from_string(small_seeds, "s.toml")); });
+  EXPECT_EQ(shear.key(), "sample.settle_unbalanced_force");
+  EXPECT_NE(shear.reason().find("0.000798 N"), std::string::npos) << shear.reason();
+  EXPECT_NO_THROW(read_run_config(
+      Scenario::kShear, ConfigReader::from_string("[particle]\ndensity = 1230.0\n[sample]\nsettle_unbalanced_force = 1e-3\n", "s.toml")));
+  // A run from a packing file does not settle: SmallOedometer.ASettlingCriterionIsNotJudgedWithoutSettling.
+}
+
 TEST(ConfigValidation, DiameterOrder) {
   const ConfigError e = oedometer_error("[particle]\ndiameter_min = 0.008\ndiameter_max = 0.007\n");
   EXPECT_EQ(e.key(), "particle.diameter_min");
