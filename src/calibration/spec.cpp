@@ -13,6 +13,7 @@
 #include "analysis/mohr_coulomb.hpp"
 #include "analysis/polyfit.hpp"
 #include "config/config_error.hpp"
+#include "config/config_reader.hpp"
 #include "io/format_number.hpp"
 #include "io/input_file.hpp"
 #include "io/load_label.hpp"
@@ -57,7 +58,7 @@ struct Node {
   bool has(const std::string& k) const { return table && table->contains(k); }
   double number(const std::string& k) const {
     const toml::node* n = get(k);
-    if (!n) fail(k, "missing (a number is required)");
+    if (!n) fail(k, "missing (a number is required)" + misspelt_key_hint(table, k));
     if (auto v = n->value<double>()) {
       if (!std::isfinite(*v)) fail(k, "must be a finite number");
       return *v;
@@ -81,7 +82,7 @@ struct Node {
   std::string string(const std::string& k, const std::string& fallback, bool required = false) const {
     const toml::node* n = get(k);
     if (!n) {
-      if (required) fail(k, "missing (a string is required)");
+      if (required) fail(k, "missing (a string is required)" + misspelt_key_hint(table, k));
       return fallback;
     }
     if (auto v = n->value<std::string>()) return *v;

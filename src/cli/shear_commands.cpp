@@ -58,7 +58,8 @@ std::vector<std::string> load_warnings(const RunConfig& c, const ShearSample& sa
                 format_significant(100.0 * r.mean_normal_stress_error, 3) + " %): the servo did not hold it" +
                 (r.normal_stress_target < 1000.0 ? " (normal stresses are in Pa)" : ""));
   if (r.particles_outside > 0)
-    w.push_back(std::to_string(r.particles_outside) + " particles ended outside the box");
+    w.push_back(std::to_string(r.particles_outside) + (r.particles_outside == 1 ? " particle" : " particles") +
+                " ended outside the box");
   return w;
 }
 
@@ -227,8 +228,9 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
                            {"stages", stages_json(sample.stages)}};
     write_text_atomically(out.path("sample.json"), info.dump(2) + "\n");
   }
-  std::printf("shear series: %zu particles (%zu generated)%s, %zu loads, %d job(s)\n", sample.particles.size(),
-              sample.generated, resumed ? ", sample reused" : "", c.shear_box.normal_stresses.size(), opt.jobs);
+  const std::size_t load_count = c.shear_box.normal_stresses.size();
+  std::printf("shear series: %zu particles (%zu generated)%s, %zu load%s, %d job(s)\n", sample.particles.size(),
+              sample.generated, resumed ? ", sample reused" : "", load_count, load_count == 1 ? "" : "s", opt.jobs);
 
   // --- loads ------------------------------------------------------------------------
   const auto& loads = c.shear_box.normal_stresses;

@@ -1,5 +1,6 @@
 #include "config/config_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -60,8 +61,15 @@ void ConfigReader::apply_override(const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
     throw ConfigError("--set", assignment, "expected key=value");
-  const std::string key = assignment.substr(0, eq);
-  const std::string value_text = assignment.substr(eq + 1);
+  // Spaces around the key and the value are not part of them: "particle.friction = 0.3"
+  // (quoted on the command line) means particle.friction=0.3.
+  const auto trimmed = [](const std::string& text) {
+    const std::size_t first = text.find_first_not_of(" \t"), last = text.find_last_not_of(" \t");
+    return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+  };
+  const std::string key = trimmed(assignment.substr(0, eq));
+  const std::string value_text = trimmed(assignment.substr(eq + 1));
+  if (key.empty()) throw ConfigError("--set", assignment, "expected key=value");
   toml::table parsed;
   try {
     parsed = toml::parse("v = " + value_text);
@@ -168,6 +176,40 @@ void ConfigReader::reject_unknown_keys() const {
 }
 
 // ---- ConfigNode ---------------------------------------------------------------------
+
+namespace {
+
+// Levenshtein distance (insertions, deletions, substitutions).
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+std::string misspelt_key_hint(const toml::table* table, const std::string& missing_key) {
+  if (!table) return "";
+  for (const auto& [k, node] : *table) {
+    const std::string name(k.str());
+    if (name != missing_key && edit_distance(name, missing_key) <= 2)
+      return " (the table has '" + name + "': misspelt?)";
+  }
+  return "";
+}
+
+void ConfigNode::require(const std::string& key, const std::string& what) const {
+  if (!has(key)) fail(key, "is required (" + what + ")" + misspelt_key_hint(table_, key));
+}
 
 void ConfigNode::fail(const std::string& key, const std::string& reason) const {
   const std::string k = full(key);

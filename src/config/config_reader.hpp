@@ -16,6 +16,10 @@ namespace colza {
 
 class ConfigReader;
 
+// For a key that is missing from `table` (may be null): " (the table has 'radus': misspelt?)"
+// when a key of the table is at most two edits away from it, "" otherwise.
+std::string misspelt_key_hint(const toml::table* table, const std::string& missing_key);
+
 // A view on one table of the document, with its dotted path.
 class ConfigNode {
  public:
@@ -39,6 +43,9 @@ class ConfigNode {
   std::vector<ConfigNode> table_array(const std::string& key) const;
   // Raises a ConfigError about `key` of this table.
   [[noreturn]] void fail(const std::string& key, const std::string& reason) const;
+  // Raises "is required (<what>)" about `key` unless the table has it, naming a key of the
+  // table that looks like a misspelling of it.
+  void require(const std::string& key, const std::string& what) const;
   const std::string& path() const { return path_; }
 
  private:

@@ -140,7 +140,12 @@ ShearBoxSpec read_shear_box(const ConfigNode& t, const ParticleSpec& particle) {
     t.fail("strength_window_end", m(b.strength_window_end) + " must not exceed shear_box.shear_displacement, " +
                                       m(b.shear_displacement) + " (the window is where the strength is averaged: "
                                       "shorten it with the shear)");
-  if (std::min(b.length, b.width) <= particle.diameter_max) t.fail("length", "the box must be wider than a particle");
+  if (std::min(b.length, b.width) <= particle.diameter_max) {
+    const bool length = b.length <= b.width;
+    t.fail(length ? "length" : "width", m(length ? b.length : b.width) + " must exceed particle.diameter_max, " +
+                                            m(particle.diameter_max) + ": the box must be wider than a particle "
+                                            "(lengths are in metres)");
+  }
   return b;
 }
 
@@ -247,7 +252,7 @@ void refuse_shared_centres(const ConfigNode& t, const std::vector<SceneParticle>
 SceneSpec read_scene(const ConfigNode& t, const ConfigReader& reader) {
   SceneSpec s;
   s.steps = t.integer("steps", 0, 1);
-  if (!t.has("steps")) t.fail("steps", "is required (number of steps to run)");
+  t.require("steps", "number of steps to run");
   s.stop_unbalanced_force = t.non_negative("stop_unbalanced_force", 0.0);
   s.record_interval = t.integer("record_interval", 1, 1);
   s.record_particles = t.integer_list("record_particles");
@@ -255,7 +260,7 @@ SceneSpec read_scene(const ConfigNode& t, const ConfigReader& reader) {
   for (const ConfigNode& p : t.table_array("particles")) {
     SceneParticle sp;
     sp.position = p.vec3("position", Vec3::Zero());
-    if (!p.has("radius")) p.fail("radius", "is required");
+    p.require("radius", "the sphere's radius, m");
     sp.radius = p.positive("radius", 0.0);
     sp.velocity = p.vec3("velocity", Vec3::Zero());
     sp.angular_velocity = p.vec3("angular_velocity", Vec3::Zero());

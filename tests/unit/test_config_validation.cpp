@@ -180,7 +180,26 @@ TEST(ConfigValidation, SceneSpheresAtOneCentreAndMissingRadiusAreRefused) {
   const std::string no_radius = dir.write("no_radius.toml", head + "[[scene.particles]]\nposition = [0.0, 0.0, 0.02]\n");
   e = expect_config_error([&] { load_run_config(Scenario::kScene, no_radius, {}); });
   EXPECT_EQ(e.key(), "scene.particles[0].radius");
-  EXPECT_EQ(e.reason(), "is required");
+  EXPECT_EQ(e.reason(), "is required (the sphere's radius, m)");
+  // A misspelt key is named beside the missing one (it would be reported as unknown only
+  // after the required one).
+  const std::string misspelt =
+      dir.write("radus.toml", head + "[[scene.particles]]\nposition = [0.0, 0.0, 0.02]\nradus = 0.003\n");
+  e = expect_config_error([&] { load_run_config(Scenario::kScene, misspelt, {}); });
+  EXPECT_EQ(e.reason(), "is required (the sphere's radius, m) (the table has 'radus': misspelt?)");
+}
+
+TEST(ConfigValidation, SetTrimsSpacesAndTheBoxWidthNamesTheDiameter) {
+  // "--set 'particle.friction = 0.3'": the spaces are not part of the key or the value.
+  const RunConfig c = load_run_config(Scenario::kOedometer, "", {"particle.friction = 0.3"});
+  EXPECT_EQ(c.particle.friction, 0.3);
+  // Diameters in mm on the shear box: the error gives both lengths and the unit.
+  const ConfigError e = expect_config_error([&] {
+    load_run_config(Scenario::kShear, "", {"particle.diameter_min=6.0", "particle.diameter_max=7.0"});
+  });
+  EXPECT_EQ(e.key(), "shear_box.length");
+  EXPECT_NE(e.reason().find("must exceed particle.diameter_max, 7 m"), std::string::npos) << e.reason();
+  EXPECT_NE(e.reason().find("lengths are in metres"), std::string::npos) << e.reason();
 }
 
 TEST(ConfigValidation, AnInactiveContactLawsTableIsCheckedToo) {
