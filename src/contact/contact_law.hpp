@@ -95,7 +95,10 @@ inline ContactOutcome evaluate_contact(const Normal& normal_law, const Tangentia
     else out.slip_dissipation = slip;
   }
   // A bond broken in shear while in tension leaves an unbonded contact without overlap:
-  // it carries no normal force (step 4) and is removed on the next step (YADE does the same).
+  // it carries no normal force (step 4) and is removed on the next step. YADE applies no
+  // normal force in that step either; its older law erases the contact on the next step as
+  // here, its newer checkPlasticity in the same step (which YADE 2023.02a has was not
+  // checked), which differs only if the pair overlaps again in the next step.
   double fn_applied = fn;
   if (bond_state == BondState::kBrokeShear) {
     out.event = ContactEvent::kBondBrokeShear;
