@@ -27,23 +27,28 @@ PhysicsSettings falling_physics() {
   return s;
 }
 
-}  // namespace
-
-TEST(Settling, ASampleStillFallingIsNotAtRest) {
-  // Ten spheres side by side (1 cm apart: they never touch each other), their bottoms 1 to
-  // 10 mm above a floor. The criterion, 1 N, is far above a sphere's weight (1.4e-3 N), so the
-  // mean unbalanced force meets it from the first check on, in flight. Settling must go on
-  // until at most 10 % of the spheres touch nothing: until the ninth has landed. With the
-  // PFC damping 0.7 a sphere falls at 0.3 g, so the one 9 mm up lands after
-  // sqrt(2 x 9e-3 / (0.3 x 9.81)) = 0.078 s; the check comes every 100 steps (1 ms).
-  World w;
+// Ten spheres side by side (1 cm apart: they never touch each other), their bottoms 1 to
+// 10 mm above a floor, settled to a criterion of 1 N, far above a sphere's weight
+// (1.4e-3 N): the mean unbalanced force meets it from the first check on, in flight. Checked
+// every 100 steps (1 ms).
+SettleResult settle_ten_falling_spheres(World& w, double max_time) {
   for (int k = 0; k < 10; ++k) w.particles.add(Vec3(0.01 * k, 0.0, kR + 1e-3 * (k + 1)), kR, kRho);
   w.walls.push_back(Wall::plane("floor", Vec3::Zero(), Vec3::UnitZ()));
   Stepper stepper(falling_physics());
   stepper.prepare(w);
   stepper.set_integration_sums({.unbalanced = true, .damping_work = false});
   Progress quiet = Progress::quiet();
-  const SettleResult r = settle(w, stepper, /*threshold=*/1.0, /*max_time=*/1.0, /*check_interval=*/100, quiet);
+  return settle(w, stepper, /*threshold=*/1.0, max_time, /*check_interval=*/100, quiet);
+}
+
+}  // namespace
+
+TEST(Settling, ASampleStillFallingIsNotAtRest) {
+  // Settling must go on until at most 10 % of the spheres touch nothing: until the ninth has
+  // landed. With the PFC damping 0.7 a sphere falls at 0.3 g, so the one 9 mm up lands after
+  // sqrt(2 x 9e-3 / (0.3 x 9.81)) = 0.078 s.
+  World w;
+  const SettleResult r = settle_ten_falling_spheres(w, /*max_time=*/1.0);
   ASSERT_TRUE(r.converged);
   EXPECT_LE(r.share_touching_nothing, kMaxShareTouchingNothing);
   const double t_ninth = std::sqrt(2.0 * 9e-3 / (0.3 * kG));
@@ -54,17 +59,11 @@ TEST(Settling, ASampleStillFallingIsNotAtRest) {
 }
 
 TEST(Settling, AShortMaxTimeEndsUnconvergedAndSaysWhy) {
-  // The same spheres, but settling may last 20 ms: the criterion is met, but none has landed
-  // (the lowest, 1 mm up, lands after sqrt(2 x 1e-3 / (0.3 x 9.81)) = 26 ms), so it does not
-  // converge, and the result carries the share touching nothing for the warning.
+  // Settling may last 20 ms: the criterion is met, but none has landed (the lowest, 1 mm up,
+  // lands after sqrt(2 x 1e-3 / (0.3 x 9.81)) = 26 ms), so it does not converge, and the
+  // result carries the share touching nothing for the warning.
   World w;
-  for (int k = 0; k < 10; ++k) w.particles.add(Vec3(0.01 * k, 0.0, kR + 1e-3 * (k + 1)), kR, kRho);
-  w.walls.push_back(Wall::plane("floor", Vec3::Zero(), Vec3::UnitZ()));
-  Stepper stepper(falling_physics());
-  stepper.prepare(w);
-  stepper.set_integration_sums({.unbalanced = true, .damping_work = false});
-  Progress quiet = Progress::quiet();
-  const SettleResult r = settle(w, stepper, 1.0, 0.02, 100, quiet);
+  const SettleResult r = settle_ten_falling_spheres(w, /*max_time=*/0.02);
   EXPECT_FALSE(r.converged);
   EXPECT_LT(r.mean_unbalanced_force, 1.0);
   EXPECT_EQ(r.share_touching_nothing, 1.0);
