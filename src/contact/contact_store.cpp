@@ -124,6 +124,16 @@ void ContactStore::renumber_particles(const std::vector<Index>& old_to_new) {
   }
 }
 
+std::vector<std::uint8_t> ContactStore::particles_in_pairs(std::size_t particle_count, bool touching_only) const {
+  std::vector<std::uint8_t> in_pair(particle_count, 0);
+  for (std::size_t k = 0; k < particle_pairs.size(); ++k)
+    if (!touching_only || particle_pairs.history[k].touching)
+      in_pair[particle_pairs.first[k]] = in_pair[particle_pairs.second[k]] = 1;
+  for (std::size_t k = 0; k < wall_pairs.size(); ++k)
+    if (!touching_only || wall_pairs.history[k].touching) in_pair[wall_pairs.particle[k]] = 1;
+  return in_pair;
+}
+
 std::size_t ContactStore::touching_particle_contacts() const {
   return std::count_if(particle_pairs.history.begin(), particle_pairs.history.end(),
                        [](const ContactHistory& h) { return h.touching != 0; });

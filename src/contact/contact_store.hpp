@@ -3,6 +3,7 @@
 // pairs are sorted by (wall, particle). A rebuild hands its new sorted lists to
 // `adopt_*`, which carries each surviving pair's history over by a merge.
 #pragma once
+#include <cstdint>
 #include <vector>
 #include "contact/history.hpp"
 #include "core/types.hpp"
@@ -37,6 +38,10 @@ class ContactStore {
   // Bumped whenever adopt_* or renumber_particles replaces the lists, so that derived
   // index structures (the threaded force loop's ForcePartition) know when to rebuild.
   std::uint64_t revision() const { return revision_; }
+
+  // Per particle (`particle_count` of them): 1 if it is in a particle or wall pair, else 0;
+  // with `touching_only`, counting only the pairs that touch (after a force pass).
+  std::vector<std::uint8_t> particles_in_pairs(std::size_t particle_count, bool touching_only) const;
 
   std::size_t touching_particle_contacts() const;
   std::size_t touching_wall_contacts() const;

@@ -36,10 +36,7 @@ DeepestOverlap deepest_overlap(const ParticleArrays& p, const std::vector<Wall>&
 
 FastestParticle fastest_particle(const ParticleArrays& p, const ContactStore& contacts, double dt,
                                  double free_flight_speed) {
-  std::vector<std::uint8_t> has_candidate(p.size(), 0);
-  const ParticlePairList& pp = contacts.particle_pairs;
-  for (std::size_t c = 0; c < pp.size(); ++c) has_candidate[pp.first[c]] = has_candidate[pp.second[c]] = 1;
-  for (Index i : contacts.wall_pairs.particle) has_candidate[i] = 1;
+  const std::vector<std::uint8_t> has_candidate = contacts.particles_in_pairs(p.size(), /*touching_only=*/false);
   FastestParticle fastest;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double speed = p.velocity[i].norm(), ratio = speed * dt / p.radius[i];

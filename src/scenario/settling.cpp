@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <vector>
 
 #include "io/format_number.hpp"
 #include "scenario/sample_preparation.hpp"
@@ -15,13 +14,7 @@ namespace {
 // The share of the free particles with no touching contact, after a force pass.
 double share_touching_nothing(const World& world) {
   const ParticleArrays& p = world.particles;
-  std::vector<std::uint8_t> touches(p.size(), 0);
-  const ParticlePairList& pairs = world.contacts.particle_pairs;
-  for (std::size_t k = 0; k < pairs.size(); ++k)
-    if (pairs.history[k].touching) touches[pairs.first[k]] = touches[pairs.second[k]] = 1;
-  const WallPairList& walls = world.contacts.wall_pairs;
-  for (std::size_t k = 0; k < walls.size(); ++k)
-    if (walls.history[k].touching) touches[walls.particle[k]] = 1;
+  const std::vector<std::uint8_t> touches = world.contacts.particles_in_pairs(p.size(), /*touching_only=*/true);
   std::size_t free = 0, alone = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.fixed[i]) continue;
