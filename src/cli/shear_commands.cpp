@@ -182,9 +182,8 @@ void warn_if_made_by_another_build(const nlohmann::json& made, const std::string
 int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   const auto t_start = std::chrono::steady_clock::now();
   const fs::path dir(opt.out_dir);
-  // A finished series is not overwritten without --force; an unfinished one (its
-  // sample.json) is resumed.
-  check_output_dir(dir, opt.force, "run", "sample.json");
+  // run_command has checked --out: a finished series is not overwritten without --force; an
+  // unfinished one (its sample.json) is resumed.
   std::vector<std::string> load_names;
   for (double sigma : config.shear_box.normal_stresses) load_names.push_back(load_label(sigma));
   SeriesOutput out(dir, opt.force, load_names);

@@ -65,12 +65,6 @@ void sync_to_disk(const fs::path& path) {
 constexpr const char* kRunFiles[] = {"summary.json", "sample.json", "packing.txt", "curve.csv", "series.csv",
                                      "result.h5"};
 
-}  // namespace
-
-bool is_staging_folder(const fs::path& entry) { return entry.filename().string().rfind(kStagingPrefix, 0) == 0; }
-
-namespace {
-
 // check_output_dir without the command's part: OutputStaging's check, for folders whose
 // command is settled (the caller checked --out; design runs and series loads are colza's own).
 void check_output_folder(const fs::path& dir, bool overwrite, const std::string& unfinished_marker) {
@@ -108,6 +102,8 @@ void refuse_another_commands_result(const fs::path& dir, const std::string& comm
 }
 
 }  // namespace
+
+bool is_staging_folder(const fs::path& entry) { return entry.filename().string().rfind(kStagingPrefix, 0) == 0; }
 
 void check_output_dir(const fs::path& dir, bool overwrite, const std::string& command,
                       const std::string& unfinished_marker) {
