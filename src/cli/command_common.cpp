@@ -1,5 +1,6 @@
 #include "cli/command_common.hpp"
 
+#include "config/plausibility.hpp"
 #include "contact/slot_registry.hpp"
 #include "core/version.hpp"
 #include "io/format_number.hpp"
@@ -84,6 +85,13 @@ std::string settling_warning(const RunConfig& c, const SettleResult& settling) {
                           " N against " + format_shortest(c.sample.settle_unbalanced_force) + " N";
   return "settling did not converge within sample.settle_max_time = " + format_shortest(c.sample.settle_max_time) +
          " s (" + state + "): the sample was not at rest when its test began; raise sample.settle_max_time";
+}
+
+std::vector<std::string> settings_warnings(const RunConfig& c, Scenario scenario, bool series,
+                                           const std::vector<double>& stresses) {
+  const std::string stress_origin =
+      series ? c.origin_of("shear_box.normal_stresses") + ": key 'shear_box.normal_stresses'" : "--normal-stress";
+  return implausible_settings(c, scenario, stresses, stress_origin);
 }
 
 }  // namespace colza

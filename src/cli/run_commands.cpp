@@ -26,7 +26,7 @@ namespace {
 // What a user must not miss in an oedometer result: printed as WARNING lines and kept in
 // summary.json's "warnings".
 std::vector<std::string> oedometer_warnings(const RunConfig& c, const OedometerResult& r) {
-  std::vector<std::string> w;
+  std::vector<std::string> w = settings_warnings(c, Scenario::kOedometer, /*series=*/false);
   if (!r.settling.converged) w.push_back(settling_warning(c, r.settling));
   if (!r.fit.reached_force_max)
     w.push_back("the force never reached fit_force_max = " + format_shortest(c.oedometer.fit_force_max) +
@@ -143,6 +143,12 @@ int run_command(const RunOptions& opt) {
     std::fprintf(stderr, "colza: error: %s\n", e.what());
     return 2;
   }
+  // Before the run, so that a unit slip can be stopped at once; the summaries keep them too.
+  const std::vector<double> stresses = scenario != Scenario::kShear ? std::vector<double>{}
+                                       : series                     ? config.shear_box.normal_stresses
+                                                                    : std::vector<double>{opt.normal_stress};
+  for (const std::string& w : settings_warnings(config, scenario, series, stresses))
+    std::fprintf(stderr, "colza: warning: %s\n", w.c_str());
   try {
     if (series) return run_shear_series(config, opt);
     OutputStaging out(opt.out_dir, opt.force);

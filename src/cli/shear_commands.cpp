@@ -45,8 +45,9 @@ std::string config_fingerprint(const RunConfig& c) {
 // did not hold the load (the paper's speed gives ~0.2 %, ten times it ~2 %: README).
 constexpr double kHeldStressError = 0.10;
 
-std::vector<std::string> load_warnings(const RunConfig& c, const ShearSample& sample, const ShearLoadResult& r) {
-  std::vector<std::string> w;
+std::vector<std::string> load_warnings(const RunConfig& c, const ShearSample& sample, const ShearLoadResult& r,
+                                       bool series) {
+  std::vector<std::string> w = settings_warnings(c, Scenario::kShear, series, {r.normal_stress_target});
   if (!sample.settling.converged) w.push_back(settling_warning(c, sample.settling));  // a packing file's is converged
   if (!r.consolidated)
     w.push_back("the plate did not hold the normal stress within shear_box.consolidation_tolerance before "
@@ -63,7 +64,9 @@ std::vector<std::string> load_warnings(const RunConfig& c, const ShearSample& sa
   return w;
 }
 
-nlohmann::json load_summary(const RunConfig& c, const ShearSample& sample, const ShearLoadResult& r, int threads) {
+// `series`: the load is one of shear_box.normal_stresses (else --normal-stress's).
+nlohmann::json load_summary(const RunConfig& c, const ShearSample& sample, const ShearLoadResult& r, int threads,
+                            bool series) {
   nlohmann::json s = common_summary(c, "shear", threads);
   s["edge_contacts"] = to_string(c.shear_box.edge_contacts);
   s["config_fingerprint"] = config_fingerprint(c);
@@ -78,7 +81,7 @@ nlohmann::json load_summary(const RunConfig& c, const ShearSample& sample, const
   s["consolidated"] = r.consolidated;
   s["consolidation_time"] = r.consolidation_time;
   s["particles_outside"] = r.particles_outside;
-  s["warnings"] = load_warnings(c, sample, r);
+  s["warnings"] = load_warnings(c, sample, r, series);
   s["bond_install"] = to_string(c.contact.bond_install);
   s["bonds_installed"] = r.bonds_installed;
   s["bonds_broken_tension"] = r.bonds_broken_tension;
@@ -112,7 +115,7 @@ void run_shear_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging
   const ShearSample sample = prepare_shear_sample(c, progress);
   write_packing(out.path("packing.txt"), sample.particles);
   const ShearLoadResult r = run_shear_load(c, sample, opt.normal_stress, progress);
-  nlohmann::json s = load_summary(c, sample, r, opt.threads);
+  nlohmann::json s = load_summary(c, sample, r, opt.threads, /*series=*/false);
   std::vector<StageTiming> stages = sample.stages;
   stages.insert(stages.end(), r.stages.begin(), r.stages.end());
   add_timing(s, stages);
@@ -267,7 +270,7 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
     const std::size_t k = todo[t];
     Progress load_progress(!opt.quiet && opt.jobs <= 1);
     const ShearLoadResult r = run_shear_load(c, sample, loads[k], load_progress);
-    nlohmann::json s = load_summary(c, sample, r, opt.threads);
+    nlohmann::json s = load_summary(c, sample, r, opt.threads, /*series=*/true);
     OutputStaging load_out(load_dirs[k], true);
     write_load(load_out, c, r, s);
     load_out.commit();
@@ -285,6 +288,7 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   s["config_fingerprint"] = fingerprint;
   s["particles"] = sample.particles.size();
   s["particles_generated"] = sample.generated;
+  s["warnings"] = settings_warnings(c, Scenario::kShear, /*series=*/true, loads);
   s["loads"] = nlohmann::json::array();
   for (std::size_t k = 0; k < loads.size(); ++k)
     s["loads"].push_back({{"normal_stress", loads[k]},

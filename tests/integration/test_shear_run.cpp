@@ -71,7 +71,8 @@ TEST_F(SmallShearSeries, ServoHoldsTheNormalStressAndNoParticleLeaves) {
 
 TEST_F(SmallShearSeries, ALoadTheServoCannotHoldIsAWarning) {
   // 25.75 Pa (kPa meant): the plate rests on a dilating sample and the stress during shearing
-  // is several hundred Pa. The run finishes, and says so (a WARNING line and the summary).
+  // is several hundred Pa. The run warns of the unit before it starts (stderr), finishes, and
+  // says so (WARNING lines and the summary).
   const fs::path out = scratch_dir("small-shear-unheld");
   const CliResult r = run_colza("run shear --quiet --normal-stress 25.75 --config " + kConfig +
                                 " --set shear_box.packing_file=" + (out_ / "packing.txt").string() +
@@ -79,8 +80,11 @@ TEST_F(SmallShearSeries, ALoadTheServoCannotHoldIsAWarning) {
                                 " --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   const auto warnings = read_json(out / "summary.json")["warnings"];
-  ASSERT_EQ(warnings.size(), 1u) << warnings.dump();
-  const std::string w = warnings[0].get<std::string>();
+  ASSERT_EQ(warnings.size(), 2u) << warnings.dump();
+  const std::string unit = "--normal-stress: normal stress 25.75 Pa is outside 100 Pa .. 10 MPa";
+  EXPECT_EQ(warnings[0].get<std::string>().rfind(unit, 0), 0u) << warnings[0];
+  EXPECT_EQ(r.stderr_text.rfind("colza: warning: " + unit, 0), 0u) << r.stderr_text;
+  const std::string w = warnings[1].get<std::string>();
   EXPECT_NE(w.find("during shearing the normal stress was"), std::string::npos) << w;
   EXPECT_NE(w.find("(normal stresses are in Pa)"), std::string::npos) << w;
   // The series' loads, held, have none.
