@@ -87,6 +87,15 @@ std::string settling_warning(const RunConfig& c, const SettleResult& settling) {
          " s (" + state + "): the sample was not at rest when its test began; raise sample.settle_max_time";
 }
 
+nlohmann::json settling_json(const RunConfig& c, const SettleResult& settling) {
+  return {{"converged", settling.converged},
+          {"steps", settling.steps},
+          {"simulated_time", settling.simulated_time},
+          {"mean_unbalanced_force", settling.mean_unbalanced_force},
+          {"share_touching_nothing", settling.share_touching_nothing},
+          {"threshold", c.sample.settle_unbalanced_force}};
+}
+
 std::vector<std::string> settings_warnings(const RunConfig& c, Scenario scenario, bool series,
                                            const std::vector<double>& stresses) {
   const std::string stress_origin =

@@ -33,6 +33,9 @@ void write_result_h5(const std::string& file, const std::string& scenario, const
 // oedometer's and the shear box's "warnings"), naming the key to raise.
 std::string settling_warning(const RunConfig& c, const SettleResult& settling);
 
+// summary.json's "settling": how the sample's settling ended, against its criterion.
+nlohmann::json settling_json(const RunConfig& c, const SettleResult& settling);
+
 // The settings a user should look at twice, most likely unit slips (config/plausibility.hpp):
 // printed before a run starts and kept in its summary.json's "warnings". `stresses` are the
 // shear box's normal stresses in question (Pa): --normal-stress, or a series' loads from

@@ -42,12 +42,7 @@ void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputSta
   s["particles"] = r.particles;
   s["packing_height"] = r.packing_height;
   s["bulk_density"] = r.bulk_density;
-  s["settling"] = {{"converged", r.settling.converged},
-                   {"steps", r.settling.steps},
-                   {"simulated_time", r.settling.simulated_time},
-                   {"mean_unbalanced_force", r.settling.mean_unbalanced_force},
-                   {"share_touching_nothing", r.settling.share_touching_nothing},
-                   {"threshold", c.sample.settle_unbalanced_force}};
+  s["settling"] = settling_json(c, r.settling);
   s["bond_install"] = to_string(c.contact.bond_install);
   s["bonds_installed"] = r.bonds_installed;
   s["bonds_broken_tension"] = r.bonds_broken_tension;

@@ -69,6 +69,18 @@ TEST_F(SmallShearSeries, ServoHoldsTheNormalStressAndNoParticleLeaves) {
   }
 }
 
+TEST_F(SmallShearSeries, EachLoadSaysHowTheSampleSettledAndCountsItsOwnSteps) {
+  for (const char* load : {"load-25750Pa", "load-78750Pa"}) {
+    const auto s = read_json(out_ / load / "summary.json");
+    ASSERT_TRUE(s.contains("settling")) << load;  // this series settled its sample
+    EXPECT_TRUE(s["settling"]["converged"].get<bool>()) << load;
+    EXPECT_GT(s["settling"]["steps"].get<long long>(), 0) << load;
+    long long stage_steps = 0;  // the load's stages: consolidation and shearing
+    for (const auto& stage : s["stages"]) stage_steps += stage["steps"].get<long long>();
+    EXPECT_EQ(s["steps"].get<long long>(), stage_steps) << load << s["stages"].dump();
+  }
+}
+
 TEST_F(SmallShearSeries, ALoadTheServoCannotHoldIsAWarning) {
   // 25.75 Pa (kPa meant): the plate rests on a dilating sample and the stress during shearing
   // is several hundred Pa. The run warns of the unit before it starts (stderr), finishes, and
