@@ -104,7 +104,9 @@ void expect_recovered(const nlohmann::json& s) {
   EXPECT_NEAR(mu, kTrueMu, 2.0 * mu_sigma) << s.dump(1);
   EXPECT_LT(mu_sigma, 0.075) << s.dump(1);
   ASSERT_TRUE(s.contains("target_correlation"));
-  EXPECT_LT(s["target_correlation"][0][1].get<double>(), -0.5);  // c1 and c2 from one fit
+  // c1 and c2 from one fit: the five realisations gave -0.99 (session 21); -0.5 lies 3.0
+  // standard errors of Fisher's z from it for n = 5 (tests/integration/correlation_bound_reference.py).
+  EXPECT_LT(s["target_correlation"][0][1].get<double>(), -0.5);
 }
 
 }  // namespace

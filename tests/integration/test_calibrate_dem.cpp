@@ -131,6 +131,10 @@ TEST_F(CalibrateCompression, PaperProcedureRecoversKnAndSaysWhatItCannotTell) {
   expect_recovered(s);
   EXPECT_EQ(s["runs_used"].get<int>(), 6);  // 5 design points + 1 validation
   ASSERT_TRUE(s.contains("target_correlation"));  // the spec's [measured] correlation, in the weights
+  // The seven realisations' correlation of c1 and c2 was -0.95 (session 21). -0.5 asserts a
+  // strong negative correlation with room for the sampling error of r from n = 7: in Fisher's
+  // z = atanh(r), with standard error 1 / sqrt(n - 3) = 0.5, -0.5 lies (atanh 0.95 - atanh
+  // 0.5) / 0.5 = 2.6 standard errors from -0.95 (tests/integration/correlation_bound_reference.py).
   EXPECT_LT(s["target_correlation"][0][1].get<double>(), -0.5) << s["target_correlation"].dump();
   EXPECT_TRUE(fs::exists(out / "report.md"));
   EXPECT_NE(read_file(out / "report.md").find("The measured c1 and c2 come from one fit, so their errors are taken as "
@@ -518,12 +522,15 @@ TEST(CalibrateDensity, BothModesRunTheLoopOnASmallSample) {
                                   (dir / "spec.toml").string() + " --out " + (dir / mode).string());
     ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
     const auto s = read_json(dir / mode / "summary.json");
-    // The target's 1 % uncertainty is 1 % of rho_p too (at a fixed packing fraction the bulk
-    // density is proportional to rho_p); each design run settles its own sample, whose
-    // packing fraction scatters, so rho_p is allowed four times that (a judgement, not a
-    // derived bound), and the validation must meet the target within twice its uncertainty.
-    EXPECT_NEAR(s["parameters"][0]["value"].get<double>(), 1260.0, 0.04 * 1260.0) << mode << s.dump(1);
-    EXPECT_LE(std::abs(s["targets"][0]["error"].get<double>()), 0.02 * rho_b) << mode;
+    // Each design run and the validation run settle their own sample, and the settled bulk
+    // density scatters from packing to packing by sigma = 2.0 % (standard deviation over seeds
+    // 1-10 at rho_p = 1260: tests/integration/density_scatter_reference.py, session 27). The
+    // calibrated rho_p = the truth's bulk density over another packing's fraction, and the
+    // validation's bulk density is yet another packing's, so both differ from the truth by the
+    // difference of two packings, sd sqrt(2) sigma: each is allowed two such sd, 5.7 %.
+    constexpr double kPackingScatter = 0.02, kAllowed = 2.0 * 1.4142135623730951 * kPackingScatter;
+    EXPECT_NEAR(s["parameters"][0]["value"].get<double>(), 1260.0, kAllowed * 1260.0) << mode << s.dump(1);
+    EXPECT_LE(std::abs(s["targets"][0]["error"].get<double>()), kAllowed * rho_b) << mode;
   }
 }
 
