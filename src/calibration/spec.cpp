@@ -14,6 +14,7 @@
 #include "analysis/polyfit.hpp"
 #include "config/config_error.hpp"
 #include "config/config_reader.hpp"
+#include "config/plausibility.hpp"
 #include "io/format_number.hpp"
 #include "io/input_file.hpp"
 #include "io/load_label.hpp"
@@ -162,6 +163,28 @@ std::string model_rejects(const Spec& s, Scenario scenario, const std::string& k
   return "";
 }
 
+// A parameter's bound that no seed has, most likely a unit slip (config/plausibility.hpp: a
+// friction design in degrees, diameters in mm), and the model's own such settings: warned
+// of, not refused (the runs can run them). The shear box's loads are checked with the
+// measured data.
+void warn_of_implausible_bounds(Spec& s, Scenario scenario, const Node& n, const Parameter& par) {
+  for (const std::string bound : {"lower", "upper"}) {
+    const double value = bound == "lower" ? par.lower : par.upper;
+    std::vector<std::string> set = s.model_set;
+    set.push_back(par.key + "=" + format_shortest(value));
+    const RunConfig model = load_run_config(scenario, s.model_config, set);  // accepted: model_rejects passed
+    for (const ImplausibleSetting& found : implausible_settings(model, scenario)) {
+      std::string w = found.text();
+      if (found.key == par.key)
+        w = n.file + ": key '" + n.full(bound) + "': " + par.name + " = " + format_shortest(value) + " (" + par.key +
+            "): " + found.reason;
+      else if (found.origin.rfind("--set", 0) == 0)  // the spec's [model] set, not a command line
+        w = s.file + ": key 'model.set' (" + found.key + "): " + found.reason;
+      if (std::find(s.warnings.begin(), s.warnings.end(), w) == s.warnings.end()) s.warnings.push_back(w);
+    }
+  }
+}
+
 }  // namespace
 
 Spec read_spec(const std::string& path) {
@@ -259,6 +282,7 @@ Spec read_spec(const std::string& path) {
       }
     if (refused == values.size()) n.fail("key", first_reason);
     if (refused > 0) n.fail(first_key, first_reason);
+    warn_of_implausible_bounds(s, scenario, n, par);
     // The fit and the sequential refinement give a parameter any value between its bounds,
     // so the model must take one that is not a whole number too: a key of whole numbers
     // (sample.count) passed the checks above and failed after the design runs. The value is

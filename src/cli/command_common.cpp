@@ -100,7 +100,10 @@ std::vector<std::string> settings_warnings(const RunConfig& c, Scenario scenario
                                            const std::vector<double>& stresses) {
   const std::string stress_origin =
       series ? c.origin_of("shear_box.normal_stresses") + ": key 'shear_box.normal_stresses'" : "--normal-stress";
-  return implausible_settings(c, scenario, stresses, stress_origin);
+  std::vector<std::string> w;
+  for (const ImplausibleSetting& found : implausible_settings(c, scenario, stresses, stress_origin))
+    w.push_back(found.text());
+  return w;
 }
 
 }  // namespace colza

@@ -11,12 +11,20 @@
 
 namespace colza {
 
+struct ImplausibleSetting {
+  std::string origin;  // the config file, "--set KEY", or where the normal stresses came from
+  std::string key;     // the config key; "" for a normal stress given as --normal-stress
+  std::string reason;  // the value, the range expected, the likely slip
+  // "ORIGIN: key 'KEY': REASON", as a ConfigError reads.
+  std::string text() const { return origin + (key.empty() ? "" : ": key '" + key + "'") + ": " + reason; }
+};
+
 // `normal_stresses` (Pa): the shear box's loads this run applies (--normal-stress, or
 // shear_box.normal_stresses for a series), with `stress_origin` naming where they came
 // from; empty for the oedometer. Scene runs are physics checks with deliberate odd values:
 // they get none.
-std::vector<std::string> implausible_settings(const RunConfig& c, Scenario scenario,
-                                              const std::vector<double>& normal_stresses = {},
-                                              const std::string& stress_origin = "");
+std::vector<ImplausibleSetting> implausible_settings(const RunConfig& c, Scenario scenario,
+                                                     const std::vector<double>& normal_stresses = {},
+                                                     const std::string& stress_origin = "");
 
 }  // namespace colza
