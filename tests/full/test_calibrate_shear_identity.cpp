@@ -1,4 +1,4 @@
-// DEM identity test of the shear stage of `colza calibrate` (label `full`, 1-2.5 min).
+// DEM identity test of the shear stage of `colza calibrate` (label `full`, ~30 s).
 // Synthetic "measured" shear curves made by colza at known bond strengths (Cn, Cs) =
 // (1.8 N, 3.3 N) must be recovered by the paper's procedure and by the sequential mode,
 // reading the curves as a lab's curves (measured.curves: strength = mean shear stress over
@@ -7,9 +7,8 @@
 // Sample: tests/data/small_shear.toml (seed 3, 3 mm of shear, strength window 1.5-3 mm,
 // loads 25.75 and 78.75 kPa) widened to a 100 x 100 mm box (1263 particles), the paper's
 // five design points, target uncertainties = the scatter of C and tan(Phi) at fixed
-// parameters (below). Run time (nice'd, 2 cores with one busy): 74 s for the two tests
-// under ctest (each process makes the truth, ~10 s; paper 40 s, sequential 35 s in all);
-// 80-135 s per seed in the seed study below (one job at a time). Hence label `full`.
+// parameters (below). Run time: 31 s for the two tests under ctest (session 27; each process
+// makes the truth; 74 s in session 9); ~37 s per seed in the seed study below. Label `full`.
 //
 // Why not the 60 x 60 mm box (439 particles) of the other shear tests: there the strength at
 // FIXED parameters scatters by 0.95 kPa (std of 6 runs with Cn perturbed by 1e-4 relative:
@@ -20,16 +19,28 @@
 // and missed Cn by up to 1.0 N: no recovery worth asserting. In the 100 x 100 mm box the
 // scatter is 0.36 and 0.20 kPa (C: 512 Pa, tan(Phi): 0.0067).
 //
-// What the shear test determines (100 x 100 mm box, truth (1.8, 3.3) N, seeds 1-7, both modes):
-//   Cn + Cs within 0.46 N of 5.1 N (median 0.11 N): well determined;
-//   Cn within 0.57 N (median 0.22 N), Cs within 0.70 N (median 0.20 N): weakly, because
-//   lowering Cn and raising Cs changes C and tan(Phi) little (the response's small singular
-//   value, about 1.8 kPa/N, is along (Cn, Cs) ~ (1, -1)); seed 4 gave (1.25, 3.97) in the
-//   paper mode and (1.23, 4.00) in the sequential mode, which reproduces the measured C and
-//   tan(Phi) within their uncertainty.
-//   Paper mode: 6 runs always; sequential: 3-9 runs (median 5).
-// Seed 3 (this test): paper (1.666, 3.403), sequential (1.573, 3.506) in 5 runs.
-// Stated tolerances: Cn + Cs +/- 0.5 N (10 %), Cn +/- 0.6 N (33 %), Cs +/- 0.75 N (23 %).
+// What the shear test determines (100 x 100 mm box, truth (1.8, 3.3) N, seeds 1-7, both modes;
+// tests/full/shear_identity_seed_study.py regenerates the table, 4 min 17 s on 2 cores in
+// session 27; the study this header quoted before, made with an older build whose runs
+// differ, found Cn + Cs within 0.46 N, Cn within 0.57 N and Cs within 0.70 N):
+//   seed  paper (Cn, Cs)   sequential (Cn, Cs), runs
+//   1     (2.242, 3.217)   (2.116, 3.250), 5
+//   2     (1.756, 3.282)   (1.745, 3.175), 5
+//   3     (2.037, 3.117)   (2.000, 3.000), 3   <- this test (small_shear.toml's seed)
+//   4     (2.030, 3.219)   (1.900, 3.309), 4
+//   5     (1.407, 4.000)   (1.459, 3.750), 5
+//   6     (1.537, 3.731)   (1.761, 3.488), 4
+//   7     (2.493, 2.314)   (2.014, 2.885), 9
+//   Cn + Cs within 0.36 N of 5.1 N: well determined;
+//   Cn within 0.69 N, Cs within 0.99 N (both at seed 7, paper mode): weakly, because lowering
+//   Cn and raising Cs changes C and tan(Phi) little (the response's small singular value is
+//   along (Cn, Cs) ~ (1, -1)). Where the paper mode lands far off (seeds 5 and 7) colza says
+//   so: its validation run misses the measurement by 1.5 and 3.1 standard uncertainties and
+//   both parameters are reported "only weakly determined"; the sequential mode's answers there
+//   meet the measurement within its uncertainty. Seed 5 puts Cs on the design's bound 4 N.
+//   Paper mode: 6 runs always; sequential: 3-9 runs.
+// Stated tolerances: the largest distances over the seven seeds rounded up to 0.1 N: Cn + Cs
+// +/- 0.4 N (8 %), Cn +/- 0.7 N (39 %), Cs +/- 1.0 N (30 %).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -91,7 +102,7 @@ class CalibrateShearIdentity : public ::testing::Test {
 fs::path CalibrateShearIdentity::dir_;
 
 // The spread measured over seeds 1-7 (see the top of the file), rounded up.
-constexpr double kToleranceSum = 0.5, kToleranceCn = 0.6, kToleranceCs = 0.75;  // N
+constexpr double kToleranceSum = 0.4, kToleranceCn = 0.7, kToleranceCs = 1.0;  // N
 
 void expect_recovered(const nlohmann::json& s, const fs::path& truth_dir) {
   const double cn = s["parameters"][0]["value"].get<double>(), cs = s["parameters"][1]["value"].get<double>();
