@@ -82,12 +82,18 @@ void check_output_folder(const fs::path& dir, bool overwrite, const std::string&
   if (fs::exists(dir / "summary.json", ec))
     throw ConfigError(name, "", "already holds a result (summary.json); pass --force to replace it");
   if (!unfinished_marker.empty() && fs::exists(dir / unfinished_marker, ec)) return;  // resumed
+  std::vector<std::string> held;  // sorted: the directory's order is the file system's
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
-    if (!is_staging_folder(it->path()))
-      throw ConfigError(name, "",
-                        "holds files (" + it->path().filename().string() +
-                            ", ...) but no colza result; choose a new or empty directory, or pass --force to write "
-                            "into it (files of the same name are replaced)");
+    if (!is_staging_folder(it->path())) held.push_back(it->path().filename().string());
+  if (held.empty()) return;
+  std::sort(held.begin(), held.end());
+  constexpr std::size_t kNamed = 3;
+  std::string listed;
+  for (std::size_t k = 0; k < std::min(held.size(), kNamed); ++k) listed += (k ? ", " : "") + held[k];
+  if (held.size() > kNamed) listed += " and " + std::to_string(held.size() - kNamed) + " more";
+  throw ConfigError(name, "",
+                    "holds " + listed + " but no colza result; choose a new or empty directory, or pass --force to "
+                    "write into it (files of the same name are replaced)");
 }
 
 // Throws ConfigError naming "--out DIR" when `dir` holds another command's result than

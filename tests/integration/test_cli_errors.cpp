@@ -165,9 +165,15 @@ TEST(CliErrors, AFolderWithOtherFilesIsNotWrittenIntoWithoutForce) {
   write_file(out / "packing.txt", "my own packing\n");
   const CliResult r = run_colza("run oedometer --quiet --config " + kConfig + " --out " + out.string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.stderr_text.find("holds files (packing.txt, ...) but no colza result"), std::string::npos)
+  EXPECT_NE(r.stderr_text.find("holds packing.txt but no colza result"), std::string::npos)
       << r.stderr_text;
   EXPECT_EQ(read_file(out / "packing.txt"), "my own packing\n");
+  // Several: the first three by name, then how many more.
+  for (const char* f : {"d.txt", "b.txt", "a.txt", "c.txt"}) write_file(out / f, "mine\n");
+  const CliResult many = run_colza("run oedometer --quiet --config " + kConfig + " --out " + out.string());
+  EXPECT_EQ(many.exit_code, 2);
+  EXPECT_NE(many.stderr_text.find("holds a.txt, b.txt, c.txt and 2 more but no colza result"), std::string::npos)
+      << many.stderr_text;
 }
 
 TEST(CliErrors, ForceReplacesOnlyColzasOwnFiles) {
