@@ -30,7 +30,8 @@ void propagate_uncertainty(const Problem& p, const std::vector<ResponseSurface>&
 // surfaces' error, so the solution's value of it is arbitrary. One whose interval is wider
 // than half the range is weakly determined. Says so, with how much each target's surface
 // changes across the range (|J_ij| times the range, in the target's unit and in units of
-// its uncertainty). Infinite sigma has its own warning (propagate_uncertainty).
+// its uncertainty). Infinite sigma has its own warning (propagate_uncertainty). A parameter
+// whose solution lies on a bound (the solver keeps to the bounds) is said to be there.
 void determination_warnings(const Problem& p, CalibrationResult& r);
 
 }  // namespace colza::calibration

@@ -132,6 +132,25 @@ TEST(CalibrationIdentity, OneParameterDensityLine) {
   EXPECT_LE(s.runs.size(), 3u);
 }
 
+TEST(CalibrationIdentity, ASolutionOnABoundSaysSo) {
+  // The same line with 680 +/- 15 kg/m^3: the line meets it at rho_p = (680 - 0.3) / 0.52 =
+  // 1307.1, past the bound 1300, where it gives 676.3, within the uncertainty; so the
+  // solution is the bound, reached, and the result must say it is the bound's value.
+  Problem p;
+  p.parameters = {{"rho_p", "particle.density", "kg/m^3", 1200.0, 1300.0}};
+  p.targets = {{"bulk_density", "kg/m^3", 680.0, 15.0}};
+  p.design = {Eigen::VectorXd::Constant(1, 1200.0), Eigen::VectorXd::Constant(1, 1300.0)};
+  const ForwardModel m = [](const Eigen::VectorXd& x) { return Eigen::VectorXd::Constant(1, 0.52 * x[0] + 0.3); };
+  const CalibrationResult r = calibrate_paper(p, m, {});
+  EXPECT_EQ(r.solution[0], 1300.0);
+  bool said = false;
+  for (const auto& w : r.warnings) said = said || w.rfind("rho_p = 1300 kg/m^3 lies on its upper bound", 0) == 0;
+  EXPECT_TRUE(said) << ::testing::PrintToString(r.warnings);
+  // Inside the bounds (the line's own test above) it says nothing of the kind.
+  p.targets = {{"bulk_density", "kg/m^3", 651.0, 3.0}};
+  for (const auto& w : calibrate_paper(p, m, {}).warnings) EXPECT_EQ(w.find("bound"), std::string::npos) << w;
+}
+
 TEST(CalibrationIdentity, TargetOutsideTheDesignIsAnError) {
   const Eigen::Vector2d far = kA * Eigen::Vector2d(900e3, 0.34) + kB;  // kn far above the design's 600 kN/m
   const Problem p = compression_problem(far, Eigen::Vector2d(1e4, 2e6));
