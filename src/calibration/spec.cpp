@@ -134,6 +134,17 @@ std::string resolve(const std::string& spec_file, const std::string& value) {
   return p.lexically_normal().string();
 }
 
+// Measured values below or above these are taken for a unit slip (exit 2 before any run,
+// where a slip used to surface as "outside what the design can reach" after the design runs):
+// a seed bulk's density (kg/m^3; oilseeds ~350..800, the paper's rapeseed 651; g/cm^3 gives
+// ~0.65), the oedometer's initial stiffness c1 (N/m; the paper's cylinder ~1e6, the 40 mm
+// test cylinder ~1e5; kN/m gives ~1e2..1e3), the cohesion's uncertainty (Pa; a shear box
+// resolves ~100 Pa, the paper's C is 11.41 kPa; kPa gives ~0.5) and tan(Phi)'s (-; tan(Phi)
+// itself is ~0.5; an angle's uncertainty in degrees gives ~1..3).
+constexpr double kLeastBulkDensity = 100.0, kMostBulkDensity = 2000.0;
+constexpr double kLeastInitialStiffness = 1e3;
+constexpr double kLeastCohesionUncertainty = 10.0;
+constexpr double kMostTanPhiUncertainty = 1.0;
 // Least normal stress of a lab direct shear test (Pa); below it a load is taken for kPa.
 constexpr double kLeastLabNormalStress = 100.0;
 // Least tau / sigma at failure of a granular bulk: tan(1 deg).
@@ -167,7 +178,13 @@ std::string model_rejects(const Spec& s, Scenario scenario, const std::string& k
 // friction design in degrees, diameters in mm), and the model's own such settings: warned
 // of, not refused (the runs can run them). The shear box's loads are checked with the
 // measured data.
+// A setting flagged at the bound but not in the model alone is the parameter's doing, even
+// under another key (kn_p in kN/m makes particle.shear_stiffness 285 times it).
 void warn_of_implausible_bounds(Spec& s, Scenario scenario, const Node& n, const Parameter& par) {
+  std::set<std::string> models_own;
+  for (const ImplausibleSetting& found :
+       implausible_settings(load_run_config(scenario, s.model_config, s.model_set), scenario))
+    models_own.insert(found.key);
   for (const std::string bound : {"lower", "upper"}) {
     const double value = bound == "lower" ? par.lower : par.upper;
     std::vector<std::string> set = s.model_set;
@@ -175,9 +192,9 @@ void warn_of_implausible_bounds(Spec& s, Scenario scenario, const Node& n, const
     const RunConfig model = load_run_config(scenario, s.model_config, set);  // accepted: model_rejects passed
     for (const ImplausibleSetting& found : implausible_settings(model, scenario)) {
       std::string w = found.text();
-      if (found.key == par.key)
+      if (found.key == par.key || !models_own.count(found.key))
         w = n.file + ": key '" + n.full(bound) + "': " + par.name + " = " + format_shortest(value) + " (" + par.key +
-            "): " + found.reason;
+            "): " + (found.key == par.key ? "" : "with it, " + found.key + " ") + found.reason;
       else if (found.origin.rfind("--set", 0) == 0)  // the spec's [model] set, not a command line
         w = s.file + ": key 'model.set' (" + found.key + "): " + found.reason;
       if (std::find(s.warnings.begin(), s.warnings.end(), w) == s.warnings.end()) s.warnings.push_back(w);
@@ -390,7 +407,12 @@ Spec read_spec(const std::string& path) {
   const Node m = root.child("measured");
   if (!m.table) root.fail("measured", "missing: the [measured] table names the measured data and their uncertainties");
   if (s.stage == Stage::kDensity) {
-    p.targets.push_back({"bulk_density", "kg/m^3", m.positive("bulk_density"), m.positive("bulk_density_uncertainty")});
+    const double bulk = m.positive("bulk_density");
+    if (bulk < kLeastBulkDensity || bulk > kMostBulkDensity)
+      m.fail("bulk_density", fmt(bulk) + " kg/m^3 is outside the " + fmt(kLeastBulkDensity) + ".." +
+                                 fmt(kMostBulkDensity) + " kg/m^3 of a seed bulk: colza reads kg/m^3 (0.651 g/cm^3 "
+                                 "is 651, the paper's rapeseed); is it in g/cm^3?");
+    p.targets.push_back({"bulk_density", "kg/m^3", bulk, m.positive("bulk_density_uncertainty")});
   } else if (s.stage == Stage::kCompression) {
     const double u1 = m.positive("c1_uncertainty"), u2 = m.positive("c2_uncertainty");
     if (m.has("curve")) {
@@ -436,7 +458,11 @@ Spec read_spec(const std::string& path) {
         s.warnings.push_back("the measured curve is poorly described by a quadratic (R^2 = " + fmt(cf.fit.r2) +
                              " < 0.95, the paper's simulated curves reach > 0.95): check the curve's units and range");
     } else {
-      p.targets.push_back({"c1", "N/m", m.number("c1"), u1});
+      const double c1 = m.number("c1");
+      if (c1 < kLeastInitialStiffness)
+        m.fail("c1", fmt(c1) + " N/m is below " + fmt(kLeastInitialStiffness) + " N/m: colza reads N/m (a bulk in "
+                                   "the paper's cylinder starts near 1e6 N/m); is it in kN/m?");
+      p.targets.push_back({"c1", "N/m", c1, u1});
       p.targets.push_back({"c2", "N/m^2", m.number("c2"), u2});
     }
     // c1 and c2 come from one quadratic over the same range, so their errors are seldom
@@ -450,6 +476,14 @@ Spec read_spec(const std::string& path) {
     }
   } else {
     const double uc = m.positive("cohesion_uncertainty"), ut = m.positive("tan_phi_uncertainty");
+    if (uc < kLeastCohesionUncertainty)
+      m.fail("cohesion_uncertainty", fmt(uc) + " Pa is below " + fmt(kLeastCohesionUncertainty) +
+                                         " Pa, finer than a shear box resolves: colza reads Pa (0.5 kPa is 500); is "
+                                         "it in kPa?");
+    if (ut >= kMostTanPhiUncertainty)
+      m.fail("tan_phi_uncertainty", fmt(ut) + " is the uncertainty of tan(Phi), which is itself ~0.5 for seeds (the "
+                                        "paper's tan 28.1 deg = 0.534): is it an angle in degrees? (2 deg at 28 deg "
+                                        "is +/- 0.045 in tan(Phi): sec^2 Phi d Phi)");
     const bool has_results = m.has("results"), has_curves = m.has("curves");
     if (has_results && has_curves)
       m.fail("curves", "give either the shear strengths (results) or one curve per normal load (curves), not both");

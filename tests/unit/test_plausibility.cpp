@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "calibration/spec.hpp"
+#include "config/config_error.hpp"
 #include "config/plausibility.hpp"
 #include "scratch_dir.hpp"
 
@@ -140,6 +141,58 @@ TEST(Plausibility, ACalibrationSpecsBoundInDegreesIsNamed) {
   EXPECT_TRUE(has(spec + ": key 'parameters[0].upper': mu_pp = 25 (particle.friction): 25 is a friction coefficient"));
   EXPECT_TRUE(has(spec + ": key 'model.set' (wall.friction): 23 is a friction coefficient"));
   EXPECT_EQ(s.warnings.size(), 3u);  // the model's own one once, not once per bound and parameter
+  // kn_p in kN/m: the warning it draws under another key (ks is then 250 times kn) is the
+  // parameter's, not the model config's.
+  const std::string kilo = dir.write(
+      "kilo.toml", "stage = \"compression\"\n[model]\nconfig = \"" COLZA_SOURCE_DIR
+                   "/tests/data/small_oedometer.toml\"\n"
+                   "[[parameters]]\nname = \"kn_p\"\nkey = \"particle.normal_stiffness\"\ndesign = [400.0, 500.0]\n"
+                   "[measured]\nc1 = 1e5\nc2 = 5e7\nc1_uncertainty = 1e4\nc2_uncertainty = 5e6\n");
+  const calibration::Spec k = calibration::read_spec(kilo);
+  bool attributed = false;
+  for (const auto& w : k.warnings)
+    attributed = attributed || w.rfind(kilo + ": key 'parameters[0].lower': kn_p = 400 (particle.normal_stiffness): "
+                                              "with it, particle.shear_stiffness 1e+05 N/m is 250 times", 0) == 0;
+  EXPECT_TRUE(attributed) << ::testing::PrintToString(k.warnings);
+}
+
+// Measured values in the wrong unit are refused when the spec is read (exit 2 in the CLI),
+// before any design run: they used to surface as "outside what the design can reach" after
+// the runs (session 27's walk-through).
+TEST(Plausibility, MeasuredValuesInTheWrongUnitAreRefused) {
+  const colza::testing::ScratchDir dir;
+  const std::string oed = COLZA_SOURCE_DIR "/tests/data/small_oedometer.toml";
+  const std::string shear = COLZA_SOURCE_DIR "/tests/data/small_shear.toml";
+  const std::string results = COLZA_SOURCE_DIR "/data/measured/shear_strength_paper_line.csv";
+  auto error_of = [&](const std::string& text) -> std::string {
+    try {
+      calibration::read_spec(dir.write("spec.toml", text));
+    } catch (const ConfigError& e) {
+      return e.key() + " | " + e.reason();
+    }
+    return "no error";
+  };
+  const std::string density = "stage = \"density\"\n[model]\nconfig = \"" + oed +
+                              "\"\n[[parameters]]\nname = \"rho_p\"\nkey = \"particle.density\"\n"
+                              "design = [1200.0, 1300.0]\n[measured]\nbulk_density_uncertainty = 0.005\n";
+  EXPECT_EQ(error_of(density + "bulk_density = 0.548\n").rfind("measured.bulk_density | 0.548 kg/m^3 is outside", 0), 0u);
+  EXPECT_EQ(error_of(density + "bulk_density = 548.0\n"), "no error");
+  const std::string compression = "stage = \"compression\"\n[model]\nconfig = \"" + oed +
+                                  "\"\n[[parameters]]\nname = \"kn_p\"\nkey = \"particle.normal_stiffness\"\n"
+                                  "design = [400e3, 500e3]\n[measured]\nc2 = 5e7\nc1_uncertainty = 1e4\n"
+                                  "c2_uncertainty = 5e6\n";
+  EXPECT_EQ(error_of(compression + "c1 = 326.0\n").rfind("measured.c1 | 326 N/m is below 1000 N/m", 0), 0u);
+  EXPECT_EQ(error_of(compression + "c1 = 3.26e5\n"), "no error");
+  const std::string shear_spec = "stage = \"shear\"\n[model]\nconfig = \"" + shear +
+                                 "\"\n[[parameters]]\nname = \"Cn\"\nkey = \"contact.contact_bond.normal_strength\"\n"
+                                 "design = [0.5, 1.5, 2.5]\n[[parameters]]\nname = \"Cs\"\n"
+                                 "key = \"contact.contact_bond.shear_strength\"\ndesign = [3.0, 2.0, 3.0]\n"
+                                 "[measured]\nresults = \"" + results + "\"\n";
+  EXPECT_EQ(error_of(shear_spec + "cohesion_uncertainty = 0.5\ntan_phi_uncertainty = 0.02\n")
+                .rfind("measured.cohesion_uncertainty | 0.5 Pa is below 10 Pa", 0), 0u);
+  EXPECT_EQ(error_of(shear_spec + "cohesion_uncertainty = 500.0\ntan_phi_uncertainty = 2.0\n")
+                .rfind("measured.tan_phi_uncertainty | 2 is the uncertainty of tan(Phi)", 0), 0u);
+  EXPECT_EQ(error_of(shear_spec + "cohesion_uncertainty = 500.0\ntan_phi_uncertainty = 0.02\n"), "no error");
 }
 
 TEST(Plausibility, ThePapersCalibrationSpecsGiveNone) {
