@@ -157,15 +157,18 @@ std::string normal_stress_in_kpa(double sigma) {
          " Pa: colza reads Pa (25.75 kPa is 25750); are these kPa?";
 }
 
-// "" when the model config loads with `key` = `value` added to the spec's overrides, else
-// why not ("the model does not accept particle.density = -1200: must be positive, ...").
-std::string model_rejects(const Spec& s, Scenario scenario, const std::string& key, double value) {
+// "" when the model config loads with `key` = `value` added to the spec's overrides (and the
+// configuration read into `accepted`, when given), else why not ("the model does not accept
+// particle.density = -1200: must be positive, ...").
+std::string model_rejects(const Spec& s, Scenario scenario, const std::string& key, double value,
+                          RunConfig* accepted = nullptr) {
   // The value exactly as a run would be given it: rounded to 6 digits, a bound just past a
   // model limit (0.9990001 for a limit of 0.999) would pass here and be refused mid-calibration.
   std::vector<std::string> set = s.model_set;
   set.push_back(key + "=" + format_shortest(value));
   try {
-    load_run_config(scenario, s.model_config, set);
+    RunConfig model = load_run_config(scenario, s.model_config, set);
+    if (accepted) *accepted = std::move(model);
   } catch (const ConfigError& e) {
     // The key that objected, when another than the parameter's (a limit between two keys).
     const std::string other = e.key().empty() || e.key() == key ? "" : "key '" + e.key() + "': ";
@@ -178,19 +181,16 @@ std::string model_rejects(const Spec& s, Scenario scenario, const std::string& k
 // friction design in degrees, diameters in mm), and the model's own such settings: warned
 // of, not refused (the runs can run them). The shear box's loads are checked with the
 // measured data.
-// A setting flagged at the bound but not in the model alone is the parameter's doing, even
-// under another key (kn_p in kN/m makes particle.shear_stiffness 285 times it).
-void warn_of_implausible_bounds(Spec& s, Scenario scenario, const Node& n, const Parameter& par) {
+// A setting flagged at the bound but not in the model alone (s.base) is the parameter's
+// doing, even under another key (kn_p in kN/m makes particle.shear_stiffness 285 times it).
+// `at_lower`, `at_upper`: the model as read with the parameter at each bound.
+void warn_of_implausible_bounds(Spec& s, Scenario scenario, const Node& n, const Parameter& par,
+                                const RunConfig& at_lower, const RunConfig& at_upper) {
   std::set<std::string> models_own;
-  for (const ImplausibleSetting& found :
-       implausible_settings(load_run_config(scenario, s.model_config, s.model_set), scenario))
-    models_own.insert(found.key);
+  for (const ImplausibleSetting& found : implausible_settings(s.base, scenario)) models_own.insert(found.key);
   for (const std::string bound : {"lower", "upper"}) {
     const double value = bound == "lower" ? par.lower : par.upper;
-    std::vector<std::string> set = s.model_set;
-    set.push_back(par.key + "=" + format_shortest(value));
-    const RunConfig model = load_run_config(scenario, s.model_config, set);  // accepted: model_rejects passed
-    for (const ImplausibleSetting& found : implausible_settings(model, scenario)) {
+    for (const ImplausibleSetting& found : implausible_settings(bound == "lower" ? at_lower : at_upper, scenario)) {
       std::string w = found.text();
       if (found.key == par.key || !models_own.count(found.key))
         w = n.file + ": key '" + n.full(bound) + "': " + par.name + " = " + format_shortest(value) + " (" + par.key +
@@ -288,8 +288,11 @@ Spec read_spec(const std::string& path) {
     values.insert(par.upper);
     std::string first_reason, first_key;
     std::size_t refused = 0;
+    RunConfig at_lower, at_upper;  // the model with the parameter at its bounds
     for (double v : values)
-      if (const std::string why = model_rejects(s, scenario, par.key, v); !why.empty()) {
+      if (const std::string why = model_rejects(s, scenario, par.key, v,
+                                                v == par.lower ? &at_lower : v == par.upper ? &at_upper : nullptr);
+          !why.empty()) {
         ++refused;
         if (first_reason.empty()) {
           first_reason = why;
@@ -299,7 +302,7 @@ Spec read_spec(const std::string& path) {
       }
     if (refused == values.size()) n.fail("key", first_reason);
     if (refused > 0) n.fail(first_key, first_reason);
-    warn_of_implausible_bounds(s, scenario, n, par);
+    warn_of_implausible_bounds(s, scenario, n, par, at_lower, at_upper);
     // The fit and the sequential refinement give a parameter any value between its bounds,
     // so the model must take one that is not a whole number too: a key of whole numbers
     // (sample.count) passed the checks above and failed after the design runs. The value is

@@ -94,9 +94,9 @@ void determination_warnings(const Problem& p, CalibrationResult& r) {
     // the planes' own solution was Cs = 3.55, Cn = -0.35, and nothing said so).
     const double xj = r.solution[static_cast<Eigen::Index>(j)];
     const double tolerance = 1e-9 * (q.upper - q.lower);
-    if (std::abs(xj - q.lower) <= tolerance || std::abs(xj - q.upper) <= tolerance) {
-      const bool lower = std::abs(xj - q.lower) <= tolerance;
-      r.warnings.push_back(q.name + " = " + fmt(xj) + " " + q.unit + " lies on its " + (lower ? "lower" : "upper") +
+    const bool on_lower = std::abs(xj - q.lower) <= tolerance, on_upper = std::abs(xj - q.upper) <= tolerance;
+    if (on_lower || on_upper) {
+      r.warnings.push_back(q.name + " = " + fmt(xj) + " " + q.unit + " lies on its " + (on_lower ? "lower" : "upper") +
                            " bound: the solution is held inside [" + fmt(q.lower) + ", " + fmt(q.upper) +
                            "], and the targets may be met better beyond it, so the value is the bound's, not a "
                            "measurement. Move the design (and the bound) past it, or check the measured data");
