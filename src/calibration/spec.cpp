@@ -145,8 +145,6 @@ constexpr double kLeastBulkDensity = 100.0, kMostBulkDensity = 2000.0;
 constexpr double kLeastInitialStiffness = 1e3;
 constexpr double kLeastCohesionUncertainty = 10.0;
 constexpr double kMostTanPhiUncertainty = 1.0;
-// Least normal stress of a lab direct shear test (Pa); below it a load is taken for kPa.
-constexpr double kLeastLabNormalStress = 100.0;
 // Least tau / sigma at failure of a granular bulk: tan(1 deg).
 constexpr double kLeastStrengthRatio = 0.017;
 

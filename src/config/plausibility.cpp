@@ -18,7 +18,6 @@ constexpr double kMinDiameter = 0.5e-3;         // m
 constexpr double kMaxDiameter = 30e-3;          // m
 constexpr double kMinDensity = 500.0;           // kg/m^3; seeds' own density ~900..1300, the paper 1230..1250
 constexpr double kMaxDensity = 2000.0;          // kg/m^3
-constexpr double kMinNormalStress = 100.0;      // Pa; the paper's shear box 25.75..78.75 kPa
 constexpr double kMaxNormalStress = 10e6;       // Pa; its oedometer reaches 3.8 MPa
 constexpr double kMinStopStress = 10e3;         // Pa: the oedometer's stop force over the piston; the
 constexpr double kMaxStopStress = 100e6;        //   paper's 30 kN is 3.8 MPa, the density stage's 200 N 25 kPa
@@ -157,9 +156,9 @@ std::vector<ImplausibleSetting> implausible_settings(const RunConfig& c, Scenari
   }
   check_speed(c, "shear_box.shear_speed", c.shear_box.shear_speed, "300 mm/min is 0.005", w);
   for (double sigma : normal_stresses)
-    if (sigma < kMinNormalStress || sigma > kMaxNormalStress)
+    if (sigma < kLeastLabNormalStress || sigma > kMaxNormalStress)
       w.push_back({stress_origin, "",
-                   "normal stress " + format_shortest(sigma) + " Pa is outside " + format_shortest(kMinNormalStress) +
+                   "normal stress " + format_shortest(sigma) + " Pa is outside " + format_shortest(kLeastLabNormalStress) +
                        " Pa .. " + format_shortest(kMaxNormalStress * 1e-6) +
                        " MPa: stresses are in Pa (the paper's 25.75 kPa is 25750)"});
   if (!normal_stresses.empty()) {

@@ -11,6 +11,11 @@
 
 namespace colza {
 
+// Least normal stress of a lab direct shear test (Pa): a shear box load below it is taken
+// for kPa (a warning for a run's load here; an error for a calibration's measured loads,
+// calibration/spec.cpp). The paper's loads are 25.75..78.75 kPa.
+inline constexpr double kLeastLabNormalStress = 100.0;
+
 struct ImplausibleSetting {
   std::string origin;  // the config file, "--set KEY", or where the normal stresses came from
   std::string key;     // the config key; "" for a normal stress given as --normal-stress
