@@ -284,7 +284,17 @@ CalibrationResult calibrate_paper(const Problem& p, const ForwardModel& model, c
   r.surfaces = fit_surfaces(p, r.runs, idx, p.surface);
   r.surface_points = idx;
   surface_warnings(p, r.surfaces, false, r.warnings);
-  r.solution = round_point(solve_on_surfaces(r.surfaces, p, p.lower(), p.upper(), p.design, true));
+  // A target out of reach even alone is a design range (or a measured value) to mend before
+  // any further run. Targets reachable alone but not together may be the surfaces' failing
+  // (a poor fit) as much as the model's: the validation run at the compromise tells.
+  const Eigen::VectorXd compromise = solve_on_surfaces(r.surfaces, p, p.lower(), p.upper(), p.design);
+  const ReachVerdict reach = judge_reach(r.surfaces, p, p.lower(), p.upper(), p.design, compromise);
+  if (reach.kind == ReachVerdict::kNotAlone) throw CalibrationError(reach.key, reach.text);
+  if (reach.kind == ReachVerdict::kNotTogether)
+    r.warnings.push_back("judged on the design's surfaces, " + reach.text +
+                         " (the solution below is that compromise, and its validation run shows what the model gives "
+                         "there)");
+  r.solution = round_point(compromise);
   // The validation run, and with replicates its other realisations (all in one batch).
   const BatchWithReplicates v = evaluate_with_replicates(p, model, opt, {r.solution}, r.solution);
   r.runs.push_back({r.solution, v.points[0], "validation", 1});
@@ -386,7 +396,7 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
     const std::vector<ResponseSurface> s = local_planes(p, r.runs, pool, best, sc, idx);
     const Eigen::VectorXd tlo = lo.cwiseMax(r.runs[best].x - radius * sc.half);
     const Eigen::VectorXd thi = hi.cwiseMin(r.runs[best].x + radius * sc.half);
-    Eigen::VectorXd x = round_point(solve_on_surfaces(s, p, tlo, thi, {r.runs[best].x}, false));
+    Eigen::VectorXd x = round_point(solve_on_surfaces(s, p, tlo, thi, {r.runs[best].x}));
     // A point already evaluated brings nothing new: shrink and retry (or give up).
     bool duplicate = false;
     for (const auto& run : r.runs) duplicate = duplicate || (sc.to_unit(run.x) - sc.to_unit(x)).norm() < 1e-9;
@@ -463,11 +473,9 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
   }
   if (!r.within_uncertainty && !confirmation_missed) {
     // Is the target reachable at all inside the bounds (judged on the last local surfaces)?
-    try {
-      solve_on_surfaces(r.surfaces, p, lo, hi, {r.solution}, true);
-    } catch (const CalibrationError& e) {
-      r.warnings.push_back(std::string("judged on the last local planes: ") + e.what());
-    }
+    const ReachVerdict reach =
+        judge_reach(r.surfaces, p, lo, hi, {r.solution}, solve_on_surfaces(r.surfaces, p, lo, hi, {r.solution}));
+    if (reach.kind != ReachVerdict::kReached) r.warnings.push_back("judged on the last local planes: " + reach.text);
     // A search that had narrowed to a few per cent of the range and still missed is chasing
     // the runs' scatter: more runs would not help.
     const bool narrowed = radius < kNarrowSpan && can_replicate;

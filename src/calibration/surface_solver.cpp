@@ -100,28 +100,30 @@ Eigen::VectorXd least_squares_in_box(const std::vector<ResponseSurface>& s, cons
   return sc.from_unit(best_u);
 }
 
-// Throws CalibrationError naming the targets the surfaces cannot reach inside [lower, upper]
-// when the joint solution x misses some target by more than its uncertainty.
-//
+}  // namespace
+
 // Reach is judged ONE TARGET AT A TIME: the joint solution trades the targets off against
 // each other (weighted least squares), so when one target is out of reach the compromise can
 // also miss a reachable target by more than its uncertainty. Naming the first target missed
 // at the compromise named the wrong one (e.g. cohesion when tan(Phi) was out of reach).
-// Only if every target is reachable alone is the error that they are not reachable together.
-void check_reach(const std::vector<ResponseSurface>& s, const Problem& p, const Eigen::VectorXd& lower,
-                 const Eigen::VectorXd& upper, const std::vector<Eigen::VectorXd>& starts, const Eigen::VectorXd& x) {
+// Only if every target is reachable alone is the verdict that they are not reachable together.
+ReachVerdict judge_reach(const std::vector<ResponseSurface>& s, const Problem& p, const Eigen::VectorXd& lower,
+                         const Eigen::VectorXd& upper, const std::vector<Eigen::VectorXd>& starts,
+                         const Eigen::VectorXd& x) {
+  std::vector<Eigen::VectorXd> all = starts;
+  all.push_back(0.5 * (lower + upper));
   const Eigen::VectorXd t = target_values(p), sig = target_sigmas(p);
   const Eigen::VectorXd y = evaluate_surfaces(s, x);
   std::vector<std::size_t> missed;
   for (std::size_t i = 0; i < p.targets.size(); ++i)
     if (std::abs(y[i] - t[i]) > sig[i]) missed.push_back(i);
-  if (missed.empty()) return;
+  if (missed.empty()) return {};
   const std::string bounds = "inside the bounds " + point_text(p, lower) + " .. " + point_text(p, upper);
   auto measured_value = [&](std::size_t i) { return fmt(t[i]) + " +/- " + fmt(sig[i]) + " " + p.targets[i].unit; };
   auto measured = [&](std::size_t i) { return "the measured " + p.targets[i].name + " = " + measured_value(i); };
   std::string unreachable, first;
   for (std::size_t i : missed) {
-    const Eigen::VectorXd xi = least_squares_in_box(s, {i}, p, lower, upper, starts);
+    const Eigen::VectorXd xi = least_squares_in_box(s, {i}, p, lower, upper, all);
     const double yi = s[i].predict(xi);
     if (std::abs(yi - t[i]) <= sig[i]) continue;
     // Range of the surface over the box corners (exact for a plane).
@@ -139,29 +141,25 @@ void check_reach(const std::vector<ResponseSurface>& s, const Problem& p, const 
                    point_text(p, xi) + "; surface range over the box corners " + fmt(lo) + " .. " + fmt(hi) + ")";
   }
   if (!first.empty())
-    throw CalibrationError(first, unreachable + ". Widen or move the design range, or check the measured value");
+    return {ReachVerdict::kNotAlone, first,
+            unreachable + ". Widen or move the design range, or check the measured value"};
   std::string misses;
   for (std::size_t i : missed)
     misses += (misses.empty() ? "" : "; ") + p.targets[i].name + " = " + fmt(y[i]) + " for the measured " + measured_value(i);
-  throw CalibrationError(p.targets[missed[0]].name,
-                         "the measured targets cannot all be reached at once: each alone is inside what the design can "
-                         "reach, but " + bounds + " the best compromise (at " + point_text(p, x) +
-                             ", weighted by the inverse covariance of the measured targets) misses " + misses +
-                             ". Widen or move the design range, or check the measured values and their uncertainties");
+  return {ReachVerdict::kNotTogether, p.targets[missed[0]].name,
+          "the measured targets cannot all be reached at once: each alone is inside what the design can reach, but " +
+              bounds + " the best compromise (at " + point_text(p, x) +
+              ", weighted by the inverse covariance of the measured targets) misses " + misses +
+              ". Widen or move the design range, or check the measured values and their uncertainties"};
 }
 
-}  // namespace
-
 Eigen::VectorXd solve_on_surfaces(const std::vector<ResponseSurface>& s, const Problem& p, const Eigen::VectorXd& lower,
-                                  const Eigen::VectorXd& upper, const std::vector<Eigen::VectorXd>& starts,
-                                  bool require_reach) {
+                                  const Eigen::VectorXd& upper, const std::vector<Eigen::VectorXd>& starts) {
   std::vector<Eigen::VectorXd> all = starts;
   all.push_back(0.5 * (lower + upper));
   std::vector<std::size_t> every(p.targets.size());
   std::iota(every.begin(), every.end(), 0);
-  const Eigen::VectorXd x = least_squares_in_box(s, every, p, lower, upper, all);
-  if (require_reach) check_reach(s, p, lower, upper, all, x);
-  return x;
+  return least_squares_in_box(s, every, p, lower, upper, all);
 }
 
 }  // namespace colza::calibration

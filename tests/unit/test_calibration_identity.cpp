@@ -248,12 +248,19 @@ TEST(CalibrationIdentity, TargetsReachableAloneButNotTogetherSaySo) {
   const ForwardModel model = [](const Eigen::VectorXd& x) {
     return Eigen::Vector2d(2000.0 + 8000.0 * x[0] + 500.0 * x[1], 0.8 - 0.2 * x[0] + 0.005 * x[1]).eval();
   };
-  const std::string m = message_of([&] { calibrate_paper(shear_problem(), model, {}); });
+  // The paper mode runs its validation at the compromise and says so (a user's poorly fitted
+  // planes once stopped it here with no report, though the model could have come close).
+  const CalibrationResult r = calibrate_paper(shear_problem(), model, {});
+  EXPECT_FALSE(r.within_uncertainty);
+  const std::string m = warning_starting_with(r, "judged on the design's surfaces, ");
   EXPECT_NE(m.find("the measured targets cannot all be reached at once: each alone is inside what the design can reach"),
             std::string::npos) << m;
   EXPECT_NE(m.find("misses cohesion = "), std::string::npos) << m;
   EXPECT_NE(m.find("; tan_phi = "), std::string::npos) << m;
-  EXPECT_EQ(m.find("is outside what the design can reach"), std::string::npos) << m;
+  EXPECT_NE(m.find("the solution below is that compromise"), std::string::npos) << m;
+  for (const auto& w : r.warnings) EXPECT_EQ(w.find("is outside what the design can reach"), std::string::npos) << w;
+  ASSERT_EQ(r.runs.size(), 6u);  // five design runs and the validation at the compromise
+  EXPECT_EQ(r.runs.back().role, "validation");
 }
 
 TEST(CalibrationIdentity, SequentialPlanesWithoutAResidualAreRefittedThroughTheLastRun) {
