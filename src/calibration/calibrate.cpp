@@ -346,6 +346,36 @@ std::vector<ResponseSurface> local_planes(const Problem& p, const std::vector<Ru
   throw CalibrationError("sequential.start", "the start points do not determine a plane: they must not be collinear");
 }
 
+// Without a measured scatter, a sequential search's last planes are judged by their residual:
+// runs that spread about a plane (residual std, at least one degree of freedom) by more than
+// its target's measurement uncertainty cannot resolve that target one run at a time, and the
+// plane's slope, the parameter uncertainty and the reach verdict drawn from it show mostly the
+// spread. (A user's density calibration on the 117-sphere sample: runs at rho_p 1237-1275
+// kg/m^3 gave bulk densities 555-572 kg/m^3, a residual of 12.6 for an uncertainty of 5, a
+// slope of 0.002 for a response of 0.44; it was told the target was out of reach and to
+// raise sequential.max_runs.) Appends the warning and returns true when some target is so.
+bool residual_warning(const Problem& p, const std::vector<ResponseSurface>& s, bool can_replicate,
+                      std::vector<std::string>& w) {
+  std::string spread;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i].degrees_of_freedom() == 0 || !(s[i].residual_std() > p.targets[i].uncertainty)) continue;
+    spread += (spread.empty() ? "" : "; ") + p.targets[i].name + " " + fmt(s[i].residual_std()) + " " +
+              p.targets[i].unit + " against " + fmt(p.targets[i].uncertainty) + " (" + std::to_string(s[i].points()) +
+              " runs, " + std::to_string(s[i].degrees_of_freedom()) + " degree(s) of freedom)";
+  }
+  if (spread.empty()) return false;
+  w.push_back("the runs spread about the last local planes by more than the measurement's uncertainty (residual std " +
+              spread + "): one run cannot resolve such a target, so the planes' slopes, and the parameter "
+              "uncertainty and reach drawn from them, mostly show the runs' spread, not the response. " +
+              (can_replicate ? std::string("Where each run settles its own sample that spread is the realisation "
+                                           "scatter: measure it with [scatter] replicates (the tolerance then "
+                                           "includes it), or use a larger sample")
+                             : std::string("Every run loads the same packing, so the spread is the response's own "
+                                           "roughness at the runs' spacing: give start points further apart "
+                                           "(sequential.start), or use a larger sample")));
+  return true;
+}
+
 }  // namespace
 
 CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& model, const LoopOptions& opt) {
@@ -435,13 +465,14 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
   for (const ResponseSurface& surface : r.surfaces) no_residual = no_residual || surface.degrees_of_freedom() == 0;
   if (no_residual) r.surfaces = local_planes(p, r.runs, pool, best, sc, r.surface_points);
   surface_warnings(p, r.surfaces, true, r.warnings);
+  // Only a model whose realisations scatter (one with other seeds to run) can have [scatter]
+  // replicates; without them, the runs' own spread about the planes is all there is to see.
+  const bool can_replicate = static_cast<bool>(opt.replicate_model);
+  const bool lost_in_residual = p.replicates == 0 && residual_warning(p, r.surfaces, can_replicate, r.warnings);
   r.runs[best].role = r.runs[best].role == "design" ? "design+validation" : "validation";
   propagate_uncertainty(p, r.surfaces, r);
   determination_warnings(p, r);
   const auto [span, narrow] = narrowest_surface_span(p, r);
-  // Only a model whose realisations scatter (one with other seeds to run) can mislead so, and
-  // only then can [scatter] replicates help.
-  const bool can_replicate = static_cast<bool>(opt.replicate_model);
   if (span < kNarrowSpan && p.replicates == 0 && can_replicate) {
     const Parameter& q = p.parameters[narrow];
     r.warnings.push_back("the uncertainty comes from planes through runs " + fmt(100.0 * span) + " % of " + q.name +
@@ -473,20 +504,27 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
   }
   if (!r.within_uncertainty && !confirmation_missed) {
     // Is the target reachable at all inside the bounds (judged on the last local surfaces)?
+    // Not on planes whose residual exceeds the uncertainty: their slopes are the runs' spread.
     const ReachVerdict reach =
         judge_reach(r.surfaces, p, lo, hi, {r.solution}, solve_on_surfaces(r.surfaces, p, lo, hi, {r.solution}));
-    if (reach.kind != ReachVerdict::kReached) r.warnings.push_back("judged on the last local planes: " + reach.text);
+    if (reach.kind != ReachVerdict::kReached && !lost_in_residual)
+      r.warnings.push_back("judged on the last local planes: " + reach.text);
     // A search that had narrowed to a few per cent of the range and still missed is chasing
     // the runs' scatter: more runs would not help.
     const bool narrowed = radius < kNarrowSpan && can_replicate;
+    std::string advice = "raise sequential.max_runs";
+    if (lost_in_residual)
+      advice = "the runs spread about the last planes by more than the measurement's uncertainty (see above), so "
+               "more runs will not help";
+    else if (narrowed)
+      advice = "the search had narrowed to " + fmt(100.0 * radius) +
+               " % of half the range, where the runs miss by more than the tolerance; if runs at nearby points "
+               "scatter, more runs will not help: measure the scatter ([scatter] replicates) or check the "
+               "measurement's uncertainty";
     r.warnings.push_back("stopped after " + std::to_string(pool.size()) + " runs (sequential.max_runs = " +
                          std::to_string(p.max_runs) + ") with the best run " +
                          fmt(normalised_misfit(p, r.achieved, tolerance)) + misfit_unit(r) + " from the measurement: " +
-                         (narrowed ? "the search had narrowed to " + fmt(100.0 * radius) +
-                                         " % of half the range, where the runs miss by more than the tolerance; if "
-                                         "runs at nearby points scatter, more runs will not help: measure the scatter "
-                                         "([scatter] replicates) or check the measurement's uncertainty"
-                                   : std::string("raise sequential.max_runs")));
+                         advice);
   }
   return r;
 }
