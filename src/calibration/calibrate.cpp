@@ -419,9 +419,9 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
   for (std::size_t k : pool)
     if (misfit(k) < misfit(best)) best = k;
   double radius = 0.5;  // trust-region half width in scaled units (1 = half the range)
-  int iteration = 0;
+  int iteration = 0;  // refinement runs made; a retry on a repeated point is not one
+  bool stalled = false;
   while (misfit(best) > 1.0 && static_cast<int>(pool.size()) < p.max_runs) {
-    ++iteration;
     std::vector<std::size_t> idx;
     const std::vector<ResponseSurface> s = local_planes(p, r.runs, pool, best, sc, idx);
     const Eigen::VectorXd tlo = lo.cwiseMax(r.runs[best].x - radius * sc.half);
@@ -436,11 +436,13 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
       radius *= 0.5;
       if (radius < 1e-4) {
         r.warnings.push_back("the refinement stalled (the surrogate's solution repeats an evaluated point)");
+        stalled = true;
         break;
       }
       continue;
     }
     throw_if_interrupted();  // Ctrl-C between runs, for models that never step (core/interrupt.hpp)
+    ++iteration;
     r.runs.push_back({x, model(x), "refinement", iteration});
     if (opt.on_run) opt.on_run(r.runs.back());
     const std::size_t k = r.runs.size() - 1;
@@ -507,15 +509,19 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
     // Not on planes whose residual exceeds the uncertainty: their slopes are the runs' spread.
     const ReachVerdict reach =
         judge_reach(r.surfaces, p, lo, hi, {r.solution}, solve_on_surfaces(r.surfaces, p, lo, hi, {r.solution}));
-    if (reach.kind != ReachVerdict::kReached && !lost_in_residual)
-      r.warnings.push_back("judged on the last local planes: " + reach.text);
+    const bool out_of_reach = reach.kind != ReachVerdict::kReached && !lost_in_residual;
+    if (out_of_reach) r.warnings.push_back("judged on the last local planes: " + reach.text);
     // A search that had narrowed to a few per cent of the range and still missed is chasing
     // the runs' scatter: more runs would not help.
     const bool narrowed = radius < kNarrowSpan && can_replicate;
     std::string advice = "raise sequential.max_runs";
-    if (lost_in_residual)
+    if (stalled)
+      advice = "the search stalled before its budget was spent (above), so more runs will not help";
+    else if (lost_in_residual)
       advice = "the runs spread about the last planes by more than the measurement's uncertainty (see above), so "
                "more runs will not help";
+    else if (out_of_reach)
+      advice = "the planes put the measurement out of reach inside the bounds (above), so more runs will not help";
     else if (narrowed)
       advice = "the search had narrowed to " + fmt(100.0 * radius) +
                " % of half the range, where the runs miss by more than the tolerance; if runs at nearby points "

@@ -136,7 +136,7 @@ struct CalibrationResult {
   std::vector<Run> runs;                // every forward evaluation, in order
   std::vector<ResponseSurface> surfaces;  // the surfaces used for the final solution
   std::vector<std::size_t> surface_points;  // indices into runs the final surfaces were fitted on
-  int iterations = 0;
+  int iterations = 0;                   // paper: 1; sequential: refinement runs made
   std::vector<std::string> warnings;
   std::size_t forward_runs() const { return runs.size(); }
 };

@@ -282,8 +282,9 @@ int calibrate_command(const CalibrateOptions& opt) {
     std::printf("\n");
   }
   if (result.confirmation.size())
-    std::printf("  confirmed by another realisation at the solution (seed + 1): %s (misfit %.3g)\n",
-                result.confirmation_misfit <= 1.0 ? "within" : "NOT within", result.confirmation_misfit);
+    std::printf("  another realisation at the solution (seed + 1): %s (misfit %.3g)%s\n",
+                result.confirmation_misfit <= 1.0 ? "within" : "misses", result.confirmation_misfit,
+                result.confirmation_misfit <= 1.0 ? "" : ": NOT validated (the stop may have been a lucky draw)");
   for (const auto& w : result.warnings) std::fprintf(stderr, "colza: warning: %s\n", w.c_str());
   return 0;
 }

@@ -151,6 +151,27 @@ TEST(CalibrationIdentity, ASolutionOnABoundSaysSo) {
   for (const auto& w : calibrate_paper(p, m, {}).warnings) EXPECT_EQ(w.find("bound"), std::string::npos) << w;
 }
 
+TEST(CalibrationIdentity, AStalledSearchDoesNotAskForMoreRuns) {
+  // y = x on [0, 1] with the target 2: the first refinement goes to the bound x = 1, and from
+  // there the surrogate's solution is always that run's point, so the search halves its region
+  // until it stalls after 3 runs of its 20.
+  Problem p;
+  p.parameters = {{"a", "k.a", "-", 0.0, 1.0}};
+  p.targets = {{"y", "-", 2.0, 0.01}};
+  p.max_runs = 20;
+  const ForwardModel m = [](const Eigen::VectorXd& x) { return Eigen::VectorXd(x); };
+  const CalibrationResult r = calibrate_sequential(p, m, {});
+  ASSERT_EQ(r.runs.size(), 3u);
+  std::string stalled, stop;
+  for (const auto& w : r.warnings) {
+    if (w.rfind("the refinement stalled", 0) == 0) stalled = w;
+    if (w.rfind("stopped after 3 runs", 0) == 0) stop = w;
+  }
+  EXPECT_FALSE(stalled.empty());
+  EXPECT_NE(stop.find("the search stalled before its budget was spent (above), so more runs will not help"),
+            std::string::npos) << stop;
+}
+
 TEST(CalibrationIdentity, TargetOutsideTheDesignIsAnError) {
   const Eigen::Vector2d far = kA * Eigen::Vector2d(900e3, 0.34) + kB;  // kn far above the design's 600 kN/m
   const Problem p = compression_problem(far, Eigen::Vector2d(1e4, 2e6));
@@ -166,6 +187,12 @@ TEST(CalibrationIdentity, TargetOutsideTheDesignIsAnError) {
   bool said = false;
   for (const auto& w : seq.warnings) said = said || w.find("outside what the design can reach") != std::string::npos;
   EXPECT_TRUE(said);
+  // Its closing advice follows from that, not from the budget (it said "raise
+  // sequential.max_runs" after 12 runs pressed against the bound).
+  std::string stop;
+  for (const auto& w : seq.warnings)
+    if (w.rfind("stopped after 12 runs", 0) == 0) stop = w;
+  EXPECT_NE(stop.find("out of reach inside the bounds (above), so more runs will not help"), std::string::npos) << stop;
 }
 
 namespace {

@@ -17,6 +17,7 @@
 #include <cstring>
 
 #include "calibration/calibrate.hpp"
+#include "calibration/report.hpp"
 #include "calibration/spec.hpp"
 #include "config/config_error.hpp"
 
@@ -84,6 +85,18 @@ LoopOptions with_replicates(const ReplicateModel& m) {
   LoopOptions o;
   o.replicate_model = m;
   return o;
+}
+
+// Refinement runs are numbered 1, 2, .. in order, whatever retries the search made on a
+// repeated point (a walk-through's 20-run report went from "refinement 7" to "refinement 9").
+bool refinements_numbered_in_order(const CalibrationResult& r) {
+  int expected = 1;
+  for (const auto& run : r.runs)
+    if (run.role == "refinement" || run.role == "validation") {
+      if (run.iteration != expected) return false;
+      ++expected;
+    }
+  return expected - 1 == r.iterations;
 }
 
 int count_role(const CalibrationResult& r, const std::string& role) {
@@ -197,6 +210,7 @@ TEST(CalibrationScatter, SequentialModeStopsChasingTheScatter) {
   EXPECT_FALSE(advises_more_runs);
   EXPECT_TRUE(flags_narrow_planes);
   EXPECT_TRUE(flags_spread);
+  EXPECT_TRUE(refinements_numbered_in_order(blind));
   p.replicates = 3;
   const CalibrationResult aware = calibrate_sequential(p, model, with_replicates(noisy));
   EXPECT_EQ(count_role(aware, "replicate"), 3);
@@ -257,6 +271,21 @@ TEST(CalibrationScatter, SequentialModeSaysWhenOneRunCannotResolveTheTarget) {
     EXPECT_NE(w.rfind("the runs spread about the last local planes", 0), 0u) << w;
 }
 
+TEST(CalibrationScatter, RefinementsAreNumberedInOrderThroughRetries) {
+  // Targets beyond the bounds (kn_p 700 kN/m > 600), runs scattering: the search presses on
+  // the bound, where the surrogate's solution repeats run points and the search retries with
+  // a smaller region. Those retries made no run, yet took a number.
+  Problem p = compression_problem(0.005);
+  const Eigen::Vector2d beyond = kA * Eigen::Vector2d(700e3, 0.34) + kB;
+  p.targets[0].value = beyond[0], p.targets[1].value = beyond[1];
+  p.max_runs = 20;
+  const ForwardModel model = [](const Eigen::VectorXd& x) { return noisy(x, 0); };
+  const CalibrationResult r = calibrate_sequential(p, model, {});
+  std::string roles;
+  for (const auto& run : r.runs) roles += run.role + " " + std::to_string(run.iteration) + "; ";
+  EXPECT_TRUE(refinements_numbered_in_order(r)) << roles;
+}
+
 TEST(CalibrationScatter, SequentialModeConfirmsItsStopWithAnotherRealisation) {
   // Without replicates the search stops at the first run within the uncertainty, and keeps
   // the best of several: with scatter (std ~1.7 %) far above the uncertainty (0.5 %), a stop
@@ -277,6 +306,14 @@ TEST(CalibrationScatter, SequentialModeConfirmsItsStopWithAnotherRealisation) {
   }
   EXPECT_TRUE(warned);
   EXPECT_FALSE(ran_out);  // it stopped within the tolerance, not for want of runs
+  EXPECT_TRUE(refinements_numbered_in_order(lucky));
+  // The report's verdict says which run missed: the table shows the solution's run, within.
+  const std::string report = calibration_report(p, lucky, {});
+  EXPECT_NE(report.find("Validation **NOT within** the measurement uncertainty: the solution's run above is within it "
+                        "(misfit "),
+            std::string::npos) << report;
+  EXPECT_NE(report.find("but another realisation at the solution (seed + 1) misses it (misfit 2.75)"),
+            std::string::npos) << report;
   // A model without scatter: the confirmation agrees and the result stands.
   const ForwardModel exact = [](const Eigen::VectorXd& x) -> Eigen::VectorXd { return kA * x + kB; };
   const ReplicateModel exact_k = [](const Eigen::VectorXd& x, int) -> Eigen::VectorXd { return kA * x + kB; };
