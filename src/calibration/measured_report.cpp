@@ -81,8 +81,12 @@ std::string measured_data_section(const Spec& s) {
       break;
     case Stage::kShear:
       if (s.measured_curves.empty()) {
-        o << "Shear strengths read from `" << s.measured_file << "` (taken as the " << s.strength.describe()
-          << "):\n\n| normal stress (Pa) | shear strength (Pa) |\n"
+        // colza cannot see how the lab read its strengths off its curves: it says what the
+        // runs' strengths are, which the lab's must match for the comparison to hold.
+        o << "Shear strengths read from `" << s.measured_file << "` as the lab stated them; the simulated ones "
+          << "they are compared with are the " << s.strength.describe()
+          << " (the lab's must be read off its curves the same way; with the curves themselves, colza does "
+             "it):\n\n| normal stress (Pa) | shear strength (Pa) |\n"
           << "|---|---|\n";
         for (const auto& [sigma, tau] : s.measured_points) o << "| " << g(sigma) << " | " << g(tau) << " |\n";
       } else {

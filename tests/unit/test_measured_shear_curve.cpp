@@ -9,6 +9,7 @@
 
 #include "analysis/mohr_coulomb.hpp"
 #include "analysis/shear_strength.hpp"
+#include "calibration/measured_report.hpp"
 #include "calibration/measured_shear_curve.hpp"
 #include "calibration/spec.hpp"
 #include "config/config_error.hpp"
@@ -214,6 +215,26 @@ TEST_F(MeasuredShearCurveTest, SpecTakesTheTargetsFromTheCurves) {
   EXPECT_DOUBLE_EQ(s.problem.targets[1].value, line.slope);
   EXPECT_EQ(s.loads, (std::vector<double>{20000.0, 60000.0}));
   EXPECT_TRUE(s.measured_file.empty());
+}
+
+TEST_F(MeasuredShearCurveTest, TheReportSaysHowEachSideOfAStrengthComparisonWasRead) {
+  // Strengths as the lab stated them: colza cannot know how they were read off the lab's
+  // curves, so it says what its own runs' strengths are (it used to say the lab's values were
+  // "taken as the mean shear stress of the rows in the strength window").
+  const Spec stated = read_spec(write("stated.toml", shear_spec("results = \"" COLZA_SOURCE_DIR
+                                                                "/data/measured/shear_strength_paper_line.csv\"\n")));
+  const std::string lab = measured_data_section(stated);
+  EXPECT_NE(lab.find("as the lab stated them; the simulated ones they are compared with are the mean shear stress"),
+            std::string::npos) << lab;
+  EXPECT_EQ(lab.find("taken as"), std::string::npos) << lab;
+  // From curves, colza reads both sides the same way and says so.
+  even_curve("low.csv", 3.0, 1000.0);
+  even_curve("high.csv", 3.0, 2000.0);
+  const Spec curves = read_spec(write("curves.toml", shear_spec("[[measured.curves]]\nnormal_stress = 20000.0\nfile = "
+                                                                "\"low.csv\"\n[[measured.curves]]\nnormal_stress = "
+                                                                "60000.0\nfile = \"high.csv\"\n")));
+  EXPECT_NE(measured_data_section(curves).find("derived from the measured curves as for the simulated ones"),
+            std::string::npos);
 }
 
 TEST_F(MeasuredShearCurveTest, SpecErrorsNameTheCurveKey) {
