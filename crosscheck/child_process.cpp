@@ -31,6 +31,12 @@ constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
 // Ends the process by `signal_number` with its default action. Async-signal-safe: sigaction,
 // sigprocmask and raise only (the handler runs with the signal blocked, hence the unblock).
 void end_by(int signal_number) {
+  // write(2) is async-signal-safe (end_by may run in the signal handler); CodeRuns::run keeps
+  // finished runs and stages a run under <out>.running until it succeeds.
+  static const char kStopped[] =
+      "crosscheck: stopped by a signal: finished runs are kept; an interrupted run's files (*.running) are cleared "
+      "by the next run\n";
+  [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, kStopped, sizeof kStopped - 1);
   struct sigaction default_action {};
   default_action.sa_handler = SIG_DFL;
   sigemptyset(&default_action.sa_mask);

@@ -73,33 +73,60 @@ bool CodeRuns::reused(const fs::path& out, const std::string& stamp, Reuse reuse
   return true;
 }
 
-bool CodeRuns::run(const std::string& code, const std::string& command, const fs::path& out,
-                   const std::string& stamp) const {
-  fs::create_directories(out.parent_path());
-  const fs::path log = out.string() + ".log";
-  // An earlier run's results must not pass for this run's if it fails (YADE's scripts write
-  // their results only at the end, colza replaces them only when it succeeds), nor its stamp.
+bool CodeRuns::run(const std::string& code, const std::function<std::string(const fs::path&)>& command_for,
+                   const fs::path& out, const std::string& stamp) const {
+  std::error_code ec;
+  fs::create_directories(out.parent_path(), ec);
+  if (ec) {
+    std::fprintf(stderr, "crosscheck: %s: cannot make the folder %s: %s\n", code.c_str(),
+                 out.parent_path().string().c_str(), ec.message().c_str());
+    return false;
+  }
+  const fs::path log = out.string() + ".log", failed_log = out.string() + ".failed.log";
   if (!removable_run_folder(out, log)) {
     std::fprintf(stderr, "crosscheck: %s: %s holds files crosscheck did not write; not running there\n", code.c_str(),
                  out.string().c_str());
     return false;
   }
-  std::error_code ec;
-  fs::remove(stamp_file(out), ec);
-  if (!ec) fs::remove_all(out, ec);
-  if (!ec) fs::remove(log, ec);
+  // The run writes into a staging folder beside `out`, and replaces `out` (its stamp and log)
+  // only when it has succeeded: a run that fails or is stopped never costs a finished one (a
+  // full-size YADE load takes hours), and an earlier result cannot pass for this run's, since
+  // the caller reads nothing of a failed run. A stop that ends crosscheck inside the run
+  // leaves the staging folder, named as unfinished, for the next run to clear.
+  const fs::path staging = out.string() + ".running", staging_log = staging.string() + ".log";
+  fs::remove_all(staging, ec);
+  if (!ec) fs::remove(staging_log, ec);
   if (ec) {
-    std::fprintf(stderr, "crosscheck: %s: cannot clear %s for the run: %s\n", code.c_str(), out.string().c_str(),
+    std::fprintf(stderr, "crosscheck: %s: cannot clear %s for the run: %s\n", code.c_str(), staging.string().c_str(),
                  ec.message().c_str());
     return false;
   }
-  const int status = run_shell_command(command, log);
-  if (stop_requested()) return false;  // stopped by crosscheck's stop signal: no failure to report
-  if (status != 0) {
-    std::fprintf(stderr, "crosscheck: %s failed (exit %d): %s\n%s", code.c_str(), status, command.c_str(),
-                 tail_of(log).c_str());
+  const std::string command = command_for(staging);
+  const int status = run_shell_command(command, staging_log);
+  if (stop_requested()) {  // stopped by crosscheck's stop signal: no failure to report
+    fs::remove_all(staging, ec);
+    fs::remove(staging_log, ec);
     return false;
   }
+  if (status != 0) {
+    fs::rename(staging_log, failed_log, ec);
+    const fs::path& whole_log = ec ? staging_log : failed_log;
+    const std::string kept = fs::exists(out) ? "; the earlier result in " + out.string() + " is kept" : "";
+    std::fprintf(stderr, "crosscheck: %s failed (exit %d): %s\n%s    (the whole log: %s%s)\n", code.c_str(), status,
+                 command.c_str(), tail_of(whole_log).c_str(), whole_log.string().c_str(), kept.c_str());
+    fs::remove_all(staging, ec);
+    return false;
+  }
+  fs::remove(stamp_file(out), ec);
+  if (!ec) fs::remove_all(out, ec);
+  if (!ec) fs::rename(staging, out, ec);
+  if (!ec) fs::rename(staging_log, log, ec);
+  if (ec) {
+    std::fprintf(stderr, "crosscheck: %s: cannot move the run from %s to %s: %s\n", code.c_str(),
+                 staging.string().c_str(), out.string().c_str(), ec.message().c_str());
+    return false;
+  }
+  fs::remove(failed_log, ec);
   try {
     write_stamp(out, stamp);
   } catch (const std::exception& e) {
@@ -123,25 +150,31 @@ std::optional<std::string> CodeRuns::stamp_of(const std::string& code, const std
 bool CodeRuns::run_colza(const std::string& scenario, const fs::path& config, const fs::path& out,
                          const std::vector<std::string>& sets, const std::vector<std::string>& extra,
                          Reuse reuse) const {
-  std::string cmd = quote(opt_.colza.string()) + " run " + scenario + " --config " + quote(config.string()) +
-                    " --out " + quote(out.string()) + " --force --quiet --threads 1";  // as YADE -j 1
-  for (const auto& s : sets) cmd += " --set " + quote(s);
-  for (const auto& e : extra) cmd += " " + quote(e);
+  const auto command_for = [&](const fs::path& into) {
+    std::string cmd = quote(opt_.colza.string()) + " run " + scenario + " --config " + quote(config.string()) +
+                      " --out " + quote(into.string()) + " --force --quiet --threads 1";  // as YADE -j 1
+    for (const auto& s : sets) cmd += " --set " + quote(s);
+    for (const auto& e : extra) cmd += " " + quote(e);
+    return cmd;
+  };
   std::vector<std::string> arguments = sets;
   arguments.insert(arguments.end(), extra.begin(), extra.end());
-  const std::optional<std::string> stamp = stamp_of("colza", cmd, {opt_.colza}, config, arguments);
+  const std::optional<std::string> stamp = stamp_of("colza", command_for(out), {opt_.colza}, config, arguments);
   if (!stamp) return false;
   if (reused(out, *stamp, reuse)) return true;
-  return run("colza", cmd, out, *stamp);
+  return run("colza", command_for, out, *stamp);
 }
 
 bool CodeRuns::run_yade(const std::string& script, const fs::path& config, const fs::path& out,
                         const std::vector<std::string>& extra) const {
   const fs::path scripts = opt_.source / "yade-scripts";
   const fs::path py = scripts / script;
-  std::string cmd = quote(opt_.yade) + " -n -j 1 -x " + quote(py.string()) + " " + quote(config.string()) + " " +
-                    quote(out.string());
-  for (const auto& e : extra) cmd += " " + quote(e);
+  const auto command_for = [&](const fs::path& into) {
+    std::string cmd = quote(opt_.yade) + " -n -j 1 -x " + quote(py.string()) + " " + quote(config.string()) + " " +
+                      quote(into.string());
+    for (const auto& e : extra) cmd += " " + quote(e);
+    return cmd;
+  };
   // The script and the modules of yade-scripts/ (every .py but the other run_*.py scripts,
   // which no script imports).
   std::vector<fs::path> programs{py};
@@ -151,10 +184,10 @@ bool CodeRuns::run_yade(const std::string& script, const fs::path& config, const
     if (f.extension() == ".py" && f.filename().string().rfind("run_", 0) != 0) programs.push_back(f);
   }
   std::sort(programs.begin() + 1, programs.end());
-  const std::optional<std::string> stamp = stamp_of("yade", cmd, programs, config, extra);
+  const std::optional<std::string> stamp = stamp_of("yade", command_for(out), programs, config, extra);
   if (!stamp) return false;
   if (reused(out, *stamp, Reuse::kIfAsked)) return true;
-  return run("yade", cmd, out, *stamp);
+  return run("yade", command_for, out, *stamp);
 }
 
 std::vector<bool> run_in_parallel(const std::vector<std::function<bool()>>& jobs) {

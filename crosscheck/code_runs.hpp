@@ -49,8 +49,11 @@ class CodeRuns {
   // Whether the finished run in `out` (summary.json present) stands, as `reuse` says; prints
   // why one made from other inputs does not.
   bool reused(const fs::path& out, const std::string& stamp, Reuse reuse) const;
-  // Runs `command` into `out` (its log beside it) and, when it succeeds, writes its stamp.
-  bool run(const std::string& code, const std::string& command, const fs::path& out, const std::string& stamp) const;
+  // Runs command_for(staging) into a staging folder beside `out` (its log beside it) and, when
+  // it succeeds, puts it in place of `out` and writes its stamp; a failed or stopped run leaves
+  // an earlier result in `out` as it was (a failed run's log: <out>.failed.log).
+  bool run(const std::string& code, const std::function<std::string(const fs::path&)>& command_for,
+           const fs::path& out, const std::string& stamp) const;
   // The stamp of a run, or nothing (and the reason on stderr) if its inputs cannot be read.
   std::optional<std::string> stamp_of(const std::string& code, const std::string& command,
                                       const std::vector<fs::path>& programs, const fs::path& config,

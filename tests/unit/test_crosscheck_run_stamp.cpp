@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "crosscheck/code_runs.hpp"
@@ -42,6 +43,11 @@ fs::path write_fake_colza(const colza::testing::ScratchDir& dir) {
                         "done\n";
   fs::permissions(exe, fs::perms::owner_all);
   return exe;
+}
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 int calls(const colza::testing::ScratchDir& dir) {
@@ -149,12 +155,19 @@ TEST(CrosscheckRunStamp, ReuseTakesOnlyARunOfTheSameInputs) {
   EXPECT_TRUE(runs.run_colza("oedometer", config, out, {"integration.time_step=1e-6"}));
   EXPECT_EQ(calls(dir), 4);
 
-  // A failed run leaves neither results nor a stamp, so its folder is never reused.
+  // A failed run leaves the earlier result, its stamp and its log as they were (a walk-through
+  // found a failed re-run deleting finished runs: hours of YADE at full size). The stamp
+  // vouches for the earlier inputs only, so the failed command's are not answered with it.
+  const std::string before = read_stamp(out).value();
+  const std::string summary_before = read_text(out / "summary.json");
   std::ofstream(dir / "fail.flag") << "";
   EXPECT_FALSE(runs.run_colza("oedometer", config, out));
-  EXPECT_FALSE(fs::exists(out / "summary.json"));
-  EXPECT_FALSE(fs::exists(stamp_file(out)));
-  EXPECT_FALSE(runs.run_colza("oedometer", config, out));
+  EXPECT_EQ(read_text(out / "summary.json"), summary_before);
+  EXPECT_EQ(read_stamp(out).value(), before);
+  EXPECT_TRUE(fs::exists(out.string() + ".log"));
+  EXPECT_TRUE(fs::exists(out.string() + ".failed.log"));
+  EXPECT_FALSE(fs::exists(out.string() + ".running"));
+  EXPECT_FALSE(runs.run_colza("oedometer", config, out));  // not reused: other inputs
   EXPECT_EQ(calls(dir), 6);
   fs::remove(dir / "fail.flag");
 
@@ -162,6 +175,7 @@ TEST(CrosscheckRunStamp, ReuseTakesOnlyARunOfTheSameInputs) {
   // --reuse, with a notice; so do results written into a stamped folder after its stamp,
   // which it does not vouch for.
   ASSERT_TRUE(runs.run_colza("oedometer", config, out));
+  EXPECT_FALSE(fs::exists(out.string() + ".failed.log"));  // a success clears the failure's log
   fs::remove(stamp_file(out));
   EXPECT_TRUE(runs.run_colza("oedometer", config, out));
   EXPECT_EQ(calls(dir), 7);
