@@ -123,6 +123,7 @@ int main(int argc, char** argv) {
             used = 0;
           }
           if (used == 0 || used != item.size() || !(v > 0.0)) throw std::invalid_argument("--loads: \"" + item + "\" is not a normal stress > 0 (Pa)");
+          if (const std::string why = load_in_kpa(v); !why.empty()) throw std::invalid_argument("--loads: " + why);
           opt.loads.push_back(v);
         }
         if (opt.loads.empty()) throw std::invalid_argument("--loads needs at least one normal stress (Pa)");
@@ -183,16 +184,24 @@ int main(int argc, char** argv) {
   SpeedTally speed;
   const CheckContext ctx{opt, tol, runs, speed};
   Report report;
-  if (opt.what == "micro" || opt.what == "all") check_micro(ctx, report);
-  if (opt.what == "oedometer") check_oedometer(ctx, report, opt.size);
-  if (opt.what == "all") {
-    check_oedometer(ctx, report, "small");
-    if (opt.size == "full") check_oedometer(ctx, report, "full");
-  }
-  if (opt.what == "shear") check_shear(ctx, report, opt.size);
-  if (opt.what == "all") {
-    check_shear(ctx, report, "small");
-    if (opt.size == "full") check_shear(ctx, report, "full");
+  try {
+    if (opt.what == "micro" || opt.what == "all") check_micro(ctx, report);
+    if (opt.what == "oedometer") check_oedometer(ctx, report, opt.size);
+    if (opt.what == "all") {
+      check_oedometer(ctx, report, "small");
+      if (opt.size == "full") check_oedometer(ctx, report, "full");
+    }
+    if (opt.what == "shear") check_shear(ctx, report, opt.size);
+    if (opt.what == "all") {
+      check_shear(ctx, report, "small");
+      if (opt.size == "full") check_shear(ctx, report, "full");
+    }
+  } catch (const fs::filesystem_error& e) {  // a folder of the work dir that cannot be made (a file in its place)
+    std::fprintf(stderr, "crosscheck: error: in --workdir %s: %s\n", opt.workdir.string().c_str(), e.what());
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "crosscheck: error: %s\n", e.what());
+    return kExitFail;
   }
   std::printf("\n");
   report.print();

@@ -103,6 +103,14 @@ std::string whole_pascals(double sigma) {
   return text;
 }
 
+std::string load_in_kpa(double load) {
+  if (!(load < 100.0)) return "";
+  char text[160];
+  std::snprintf(text, sizeof text, "%.15g Pa is below a lab shear box's least normal stress (100 Pa): loads are in Pa "
+                "(the paper's 25.75 kPa is 25750)", load);
+  return text;
+}
+
 std::string loads_sharing_a_run(const std::vector<double>& loads) {
   for (std::size_t a = 0; a < loads.size(); ++a)
     for (std::size_t b = a + 1; b < loads.size(); ++b)
@@ -213,6 +221,8 @@ toml::table read_tolerances(const fs::path& file, const std::string& command, co
       std::vector<double> values;
       for (const auto& n : *loads) values.push_back(n.value<double>().value_or(0.0));
       if (const std::string why = loads_sharing_a_run(values); !why.empty()) c.fail(h + ".loads", why);
+      for (double v : values)
+        if (const std::string why = load_in_kpa(v); !why.empty()) c.fail(h + ".loads", why);
     }
     for (const auto& [section, base, wanted, key] :
          {std::tuple{&oedometer_size, o, wanted_oedometer, "config"},

@@ -25,6 +25,11 @@ std::string whole_pascals(double sigma);
 // such loads would share a run folder and their runs.
 std::string loads_sharing_a_run(const std::vector<double>& loads);
 
+// Why a shear box normal stress (Pa) is refused, or "": below 100 Pa it is taken for kPa, as
+// colza calibrate refuses a measured load below its kLeastLabNormalStress (the paper's loads
+// are 25750..78750 Pa; a walk-through's "--loads 25.75,78.75" ran loads of 0.03 kPa).
+std::string load_in_kpa(double load);
+
 // Parses `file` and checks every key against the schema below; `command` (micro, oedometer,
 // shear, all) and `size` (small, full) say which sections must be there, and the files the
 // command's sections name (config, settle_config, crosscheck/scenes/<scene>.toml) must be

@@ -66,6 +66,10 @@ TEST(CrosscheckTolerances, MisspeltKeysWrongTypesAndRangesAreNamed) {
   EXPECT_NE(e.find("key 'shear.small.loads': loads 25750 and 25750.3 Pa are the same to the pascal"),
             std::string::npos)
       << e;
+  // Loads in kPa (a walk-through's --loads 25.75,78.75 ran 0.03 kPa loads): refused, as --loads.
+  e = error_of(dir, replaced(text, "loads = [25.75e3, 78.75e3]", "loads = [25.75, 78.75]"), "shear");
+  EXPECT_NE(e.find("key 'shear.small.loads': 25.75 Pa is below a lab shear box's least normal stress (100 Pa)"),
+            std::string::npos) << e;
   e = error_of(dir, replaced(text, "loads = [25.75e3, 78.75e3]", ""), "shear");
   EXPECT_NE(e.find("key 'shear.small.loads': missing"), std::string::npos) << e;
 }
