@@ -215,7 +215,30 @@ toml::table read_tolerances(const fs::path& file, const std::string& command, co
       c.fail(o + ".travels", "missing: with ensemble_realisations = " + std::to_string(realisations) +
                                  " the ensemble compares the mean forces at these travels, and without them it "
                                  "would judge nothing");
+    // Travels in mm and a strength window out of order or past the shear's end passed this
+    // check and failed every row after the whole ensemble had run (a walk-through: travels =
+    // [5, 6, 7] ran 16 runs; a window 3 .. 1.5 mm ran 22 YADE runs for colza's refusals).
+    const auto g = [](double v) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%g", v);
+      return std::string(text);
+    };
+    if (const toml::array* travels = oedometer_size["travels"].as_array())
+      for (const auto& n : *travels)
+        if (n.value<double>().value_or(0.0) > 0.05)
+          c.fail(o + ".travels", "a travel of " + g(n.value<double>().value_or(0.0)) +
+                                     " m is more than the oedometer's sample compresses: travels are in m (5 mm is "
+                                     "0.005)");
     const toml::table& shear_size = c.section(doc, h, wanted_shear);
+    const auto window_start = shear_size["strength_window_start"].value<double>();
+    const auto window_end = shear_size["strength_window_end"].value<double>();
+    const auto sheared = shear_size["shear_displacement"].value<double>();
+    if (window_start && window_end && !(*window_start < *window_end))
+      c.fail(h + ".strength_window_end", "must be above strength_window_start (" + g(*window_start) + " m), got " +
+                                             g(*window_end) + " m");
+    if (window_end && sheared && *window_end > *sheared)
+      c.fail(h + ".strength_window_end", "must be at most shear_displacement (" + g(*sheared) + " m), got " +
+                                             g(*window_end) + " m");
     c.table(h, shear_size, shear, wanted_shear ? std::set<std::string>{"config", "loads"} : std::set<std::string>{});
     if (const toml::array* loads = shear_size["loads"].as_array()) {
       std::vector<double> values;

@@ -66,6 +66,16 @@ TEST(CrosscheckTolerances, MisspeltKeysWrongTypesAndRangesAreNamed) {
   EXPECT_NE(e.find("key 'shear.small.loads': loads 25750 and 25750.3 Pa are the same to the pascal"),
             std::string::npos)
       << e;
+  // A strength window out of order or past the shear's end, and travels in mm: refused before
+  // any run (each used to run the whole ensemble and fail every row).
+  e = error_of(dir, replaced(text, "strength_window_start = 0.002", "strength_window_start = 0.005"), "shear");
+  EXPECT_NE(e.find("key 'shear.full.strength_window_end': must be above strength_window_start (0.005 m), got"),
+            std::string::npos) << e;
+  e = error_of(dir, replaced(text, "strength_window_end = 0.004", "strength_window_end = 0.006"), "shear");
+  EXPECT_NE(e.find("key 'shear.full.strength_window_end': must be at most shear_displacement (0.004 m), got 0.006 m"),
+            std::string::npos) << e;
+  e = error_of(dir, replaced(text, "travels = [0.005, 0.006, 0.007]", "travels = [5, 6, 7]"), "oedometer");
+  EXPECT_NE(e.find("key 'oedometer.small.travels': a travel of 5 m is more than"), std::string::npos) << e;
   // Loads in kPa (a walk-through's --loads 25.75,78.75 ran 0.03 kPa loads): refused, as --loads.
   e = error_of(dir, replaced(text, "loads = [25.75e3, 78.75e3]", "loads = [25.75, 78.75]"), "shear");
   EXPECT_NE(e.find("key 'shear.small.loads': 25.75 Pa is below a lab shear box's least normal stress (100 Pa)"),
