@@ -9,6 +9,8 @@
 #include <tuple>
 #include <vector>
 
+#include "report.hpp"
+
 namespace crosscheck {
 
 namespace fs = std::filesystem;
@@ -105,10 +107,8 @@ std::string whole_pascals(double sigma) {
 
 std::string load_in_kpa(double load) {
   if (!(load < 100.0)) return "";
-  char text[160];
-  std::snprintf(text, sizeof text, "%.15g Pa is below a lab shear box's least normal stress (100 Pa): loads are in Pa "
-                "(the paper's 25.75 kPa is 25750)", load);
-  return text;
+  return fmt(load, "%.15g") + " Pa is below a lab shear box's least normal stress (100 Pa): loads are in Pa (the "
+         "paper's 25.75 kPa is 25750)";
 }
 
 std::string loads_sharing_a_run(const std::vector<double>& loads) {
@@ -218,15 +218,10 @@ toml::table read_tolerances(const fs::path& file, const std::string& command, co
     // Travels in mm and a strength window out of order or past the shear's end passed this
     // check and failed every row after the whole ensemble had run (a walk-through: travels =
     // [5, 6, 7] ran 16 runs; a window 3 .. 1.5 mm ran 22 YADE runs for colza's refusals).
-    const auto g = [](double v) {
-      char text[32];
-      std::snprintf(text, sizeof text, "%g", v);
-      return std::string(text);
-    };
     if (const toml::array* travels = oedometer_size["travels"].as_array())
       for (const auto& n : *travels)
         if (n.value<double>().value_or(0.0) > 0.05)
-          c.fail(o + ".travels", "a travel of " + g(n.value<double>().value_or(0.0)) +
+          c.fail(o + ".travels", "a travel of " + fmt(n.value<double>().value_or(0.0), "%g") +
                                      " m is more than the oedometer's sample compresses: travels are in m (5 mm is "
                                      "0.005)");
     const toml::table& shear_size = c.section(doc, h, wanted_shear);
@@ -234,11 +229,11 @@ toml::table read_tolerances(const fs::path& file, const std::string& command, co
     const auto window_end = shear_size["strength_window_end"].value<double>();
     const auto sheared = shear_size["shear_displacement"].value<double>();
     if (window_start && window_end && !(*window_start < *window_end))
-      c.fail(h + ".strength_window_end", "must be above strength_window_start (" + g(*window_start) + " m), got " +
-                                             g(*window_end) + " m");
+      c.fail(h + ".strength_window_end", "must be above strength_window_start (" + fmt(*window_start, "%g") + " m), got " +
+                                             fmt(*window_end, "%g") + " m");
     if (window_end && sheared && *window_end > *sheared)
-      c.fail(h + ".strength_window_end", "must be at most shear_displacement (" + g(*sheared) + " m), got " +
-                                             g(*window_end) + " m");
+      c.fail(h + ".strength_window_end", "must be at most shear_displacement (" + fmt(*sheared, "%g") + " m), got " +
+                                             fmt(*window_end, "%g") + " m");
     c.table(h, shear_size, shear, wanted_shear ? std::set<std::string>{"config", "loads"} : std::set<std::string>{});
     if (const toml::array* loads = shear_size["loads"].as_array()) {
       std::vector<double> values;

@@ -507,9 +507,10 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
   if (!r.within_uncertainty && !confirmation_missed) {
     // Is the target reachable at all inside the bounds (judged on the last local surfaces)?
     // Not on planes whose residual exceeds the uncertainty: their slopes are the runs' spread.
-    const ReachVerdict reach =
-        judge_reach(r.surfaces, p, lo, hi, {r.solution}, solve_on_surfaces(r.surfaces, p, lo, hi, {r.solution}));
-    const bool out_of_reach = reach.kind != ReachVerdict::kReached && !lost_in_residual;
+    ReachVerdict reach;
+    if (!lost_in_residual)
+      reach = judge_reach(r.surfaces, p, lo, hi, {r.solution}, solve_on_surfaces(r.surfaces, p, lo, hi, {r.solution}));
+    const bool out_of_reach = reach.kind != ReachVerdict::kReached;
     if (out_of_reach) r.warnings.push_back("judged on the last local planes: " + reach.text);
     // A search that had narrowed to a few per cent of the range and still missed is chasing
     // the runs' scatter: more runs would not help.

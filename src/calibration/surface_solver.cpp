@@ -11,6 +11,13 @@ namespace colza::calibration {
 
 namespace {
 
+// The solver's starts: the given points and the box's centre.
+std::vector<Eigen::VectorXd> with_centre(std::vector<Eigen::VectorXd> starts, const Eigen::VectorXd& lower,
+                                         const Eigen::VectorXd& upper) {
+  starts.push_back(0.5 * (lower + upper));
+  return starts;
+}
+
 std::string point_text(const Problem& p, const Eigen::VectorXd& x) {
   std::string s = "(";
   for (std::size_t j = 0; j < p.parameters.size(); ++j) s += (j ? ", " : "") + p.parameters[j].name + " = " + fmt(x[j]);
@@ -110,8 +117,7 @@ Eigen::VectorXd least_squares_in_box(const std::vector<ResponseSurface>& s, cons
 ReachVerdict judge_reach(const std::vector<ResponseSurface>& s, const Problem& p, const Eigen::VectorXd& lower,
                          const Eigen::VectorXd& upper, const std::vector<Eigen::VectorXd>& starts,
                          const Eigen::VectorXd& x) {
-  std::vector<Eigen::VectorXd> all = starts;
-  all.push_back(0.5 * (lower + upper));
+  const std::vector<Eigen::VectorXd> all = with_centre(starts, lower, upper);
   const Eigen::VectorXd t = target_values(p), sig = target_sigmas(p);
   const Eigen::VectorXd y = evaluate_surfaces(s, x);
   std::vector<std::size_t> missed;
@@ -155,11 +161,9 @@ ReachVerdict judge_reach(const std::vector<ResponseSurface>& s, const Problem& p
 
 Eigen::VectorXd solve_on_surfaces(const std::vector<ResponseSurface>& s, const Problem& p, const Eigen::VectorXd& lower,
                                   const Eigen::VectorXd& upper, const std::vector<Eigen::VectorXd>& starts) {
-  std::vector<Eigen::VectorXd> all = starts;
-  all.push_back(0.5 * (lower + upper));
   std::vector<std::size_t> every(p.targets.size());
   std::iota(every.begin(), every.end(), 0);
-  return least_squares_in_box(s, every, p, lower, upper, all);
+  return least_squares_in_box(s, every, p, lower, upper, with_centre(starts, lower, upper));
 }
 
 }  // namespace colza::calibration

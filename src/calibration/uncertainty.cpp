@@ -92,8 +92,9 @@ void determination_warnings(const Problem& p, CalibrationResult& r) {
     // On a bound: the solver keeps to [lower, upper], so the surfaces' best point lies there
     // or beyond (found in session 27's walk-through: Cs = 3 N exactly, its upper bound, where
     // the planes' own solution was Cs = 3.55, Cn = -0.35, and nothing said so).
+    const double range = q.upper - q.lower, sigma = r.sigma[static_cast<Eigen::Index>(j)];
     const double xj = r.solution[static_cast<Eigen::Index>(j)];
-    const double tolerance = 1e-9 * (q.upper - q.lower);
+    const double tolerance = 1e-9 * range;
     const bool on_lower = std::abs(xj - q.lower) <= tolerance, on_upper = std::abs(xj - q.upper) <= tolerance;
     if (on_lower || on_upper) {
       r.warnings.push_back(q.name + " = " + fmt(xj) + " " + q.unit + " lies on its " + (on_lower ? "lower" : "upper") +
@@ -101,7 +102,6 @@ void determination_warnings(const Problem& p, CalibrationResult& r) {
                            "], and the targets may be met better beyond it, so the value is the bound's, not a "
                            "measurement. Move the design (and the bound) past it, or check the measured data");
     }
-    const double range = q.upper - q.lower, sigma = r.sigma[static_cast<Eigen::Index>(j)];
     const double interval = 4.0 * sigma;
     if (!std::isfinite(sigma) || interval <= 0.5 * range) continue;
     std::string effects;
