@@ -22,7 +22,7 @@ inline constexpr double kMissingValue = std::numeric_limits<double>::quiet_NaN()
 inline void check_same_count(Report& report, const std::string& metric, const nlohmann::json& cs,
                              const nlohmann::json& ys, const std::string& key) {
   const double c = cs.value(key, kMissingValue), y = ys.value(key, kMissingValue);
-  report.check(metric, c, y, std::abs(c - y), 0.0, "%.0f");
+  report.check(metric, c, y, std::abs(c - y), Measure::kAbsolute, fixed_tolerance(0.0), "%.0f");
 }
 
 // What every check uses: the options, the tolerance table, the runs of both codes, and the
@@ -58,18 +58,19 @@ void check_shear(const CheckContext& ctx, Report& report, const std::string& siz
 // force's) max |colza - YADE| / max(max |colza signal|, floor[kind]) against `relative`, and
 // the contact counts against `contacts_tol`. Throws std::runtime_error if the two series have
 // different columns, rows or steps.
-void compare_scene_series(Report& report, const std::string& scene, const Csv& c, const Csv& y, double relative,
-                          double contacts_tol, const std::map<std::string, double>& floor);
+void compare_scene_series(Report& report, const std::string& scene, const Csv& c, const Csv& y,
+                          const Tolerance& relative, const Tolerance& contacts_tol,
+                          const std::map<std::string, double>& floor);
 // One oedometer loading's curve.csv and summary.json of each code by [oedometer.<size>] `t`:
 // the same start (particles, contacts), the first rows (must coincide), the rms difference of
 // the force over the logged range (from the fit's lower force of `config` to the smaller final
 // travel), the force at the travels, and YADE's foreign_patch_contacts, which must be 0.
 void compare_oedometer_curves(Report& report, const std::string& label, const Csv& c, const Csv& y,
-                              const toml::table& t, const nlohmann::json& cs, const nlohmann::json& ys,
+                              const ToleranceSection& t, const nlohmann::json& cs, const nlohmann::json& ys,
                               const fs::path& config);
 // The shear box's deterministic start, curve.csv of each code: shear and normal stress (max
 // |diff| / max) against `relative`, contacts and bonds exactly. Throws std::runtime_error if
 // the row counts differ.
-void compare_shear_start(Report& report, const std::string& label, const Csv& c, const Csv& y, double relative);
+void compare_shear_start(Report& report, const std::string& label, const Csv& c, const Csv& y, const Tolerance& relative);
 
 }  // namespace crosscheck

@@ -9,12 +9,17 @@
 
 namespace crosscheck {
 
-EnsembleSpec read_ensemble(const toml::table& t) {
+EnsembleSpec read_ensemble(const ToleranceSection& t) {
   EnsembleSpec e;
-  e.realisations = static_cast<std::size_t>(std::max(1.0, tol_number(t, "ensemble_realisations", 1.0)));
-  e.amplitude = tol_number(t, "ensemble_perturbation", e.amplitude);
-  e.alpha = tol_number(t, "ensemble_alpha", e.alpha);
+  e.realisations = static_cast<std::size_t>(std::max(1.0, tol_number(t.table, "ensemble_realisations", 1.0)));
+  e.amplitude = tol_number(t.table, "ensemble_perturbation", e.amplitude);
+  e.alpha = t.get("ensemble_alpha", e.alpha.value);
   return e;
+}
+
+Tolerance EnsembleSpec::alpha_per_row(std::size_t rows) const {
+  rows = std::max<std::size_t>(1, rows);
+  return {alpha.value / static_cast<double>(rows), alpha.key + " / " + std::to_string(rows)};
 }
 
 void write_perturbed_packing(const std::string& text, const fs::path& file, std::uint64_t seed, double amplitude) {
@@ -42,14 +47,14 @@ bool run_realisations(const std::vector<RealisationRun>& runs, Report& report, c
 std::string mean_and_error(double mean, double se, const char* f) { return fmt(mean, f) + " +- " + fmt(se, f); }
 
 void check_p(Report& report, const std::string& metric, const std::string& colza, const std::string& yade,
-             const MeanDifference& d, const std::string& note, double alpha_row) {
-  const bool pass = std::isfinite(d.p) && d.p >= alpha_row;
+             const MeanDifference& d, const std::string& note, const Tolerance& alpha_row) {
+  const bool pass = std::isfinite(d.p) && d.p >= alpha_row.value;
   report.add(Row{metric, colza, yade, "t = " + fmt(d.t, "%.2f") + ", p = " + fmt(d.p, "%.2g") + note,
-                 "p >= " + fmt(alpha_row, "%.2g"), pass, false});
+                 measure_name(Measure::kTTest), "p >= " + fmt(alpha_row.value, "%.2g"), pass, false, alpha_row.key});
 }
 
 void compare_means(Report& report, const std::string& metric, const std::string& unit, const SampleSummary& colza,
-                   const SampleSummary& yade, double scale, const char* f, double alpha_row) {
+                   const SampleSummary& yade, double scale, const char* f, const Tolerance& alpha_row) {
   const MeanDifference d = difference_of_means(colza, yade);
   check_p(report, metric + " (" + unit + ", mean +- s.e.)", mean_and_error(scale * colza.mean, scale * colza.se, f),
           mean_and_error(scale * yade.mean, scale * yade.se, f), d,

@@ -19,9 +19,11 @@ namespace crosscheck {
 struct EnsembleSpec {
   std::size_t realisations = 1;
   double amplitude = 1e-12;
-  double alpha = 0.01;
+  Tolerance alpha{0.01, "ensemble_alpha (default)"};
+  // alpha / rows, its key followed by " / rows".
+  Tolerance alpha_per_row(std::size_t rows) const;
 };
-EnsembleSpec read_ensemble(const toml::table& t);
+EnsembleSpec read_ensemble(const ToleranceSection& t);
 
 // `text` (a packing file's) perturbed by perturbed_packing(seed, amplitude), written to
 // `file`. Throws std::runtime_error if it cannot.
@@ -41,12 +43,12 @@ std::string mean_and_error(double mean, double se, const char* f = "%.3f");
 
 // A row judged by the p-value of d: passes when p >= alpha_row. `note` follows t and p.
 void check_p(Report& report, const std::string& metric, const std::string& colza, const std::string& yade,
-             const MeanDifference& d, const std::string& note, double alpha_row);
+             const MeanDifference& d, const std::string& note, const Tolerance& alpha_row);
 
 // The two rows of one quantity measured on every realisation of both codes: the means judged
 // by check_p (values printed times `scale`, format f), then an information row with each code's
 // scatter of one realisation (sd).
 void compare_means(Report& report, const std::string& metric, const std::string& unit, const SampleSummary& colza,
-                   const SampleSummary& yade, double scale, const char* f, double alpha_row);
+                   const SampleSummary& yade, double scale, const char* f, const Tolerance& alpha_row);
 
 }  // namespace crosscheck

@@ -35,8 +35,9 @@
 // Ctrl-C, SIGTERM or SIGHUP to crosscheck stops the runs in progress (SIGTERM to each run's
 // process group, child_process.hpp) and then crosscheck, by that signal.
 //
-// Prints a table (metric, colza, YADE, difference, tolerance, PASS/FAIL) and both codes'
-// speed. Exit code: 0 all passed, 1 something failed (a run that fails is a FAIL row), 2 bad
+// Prints a table (metric, colza, YADE, difference and its kind, tolerance, PASS/FAIL, the
+// tolerances file's key; report.hpp) and both codes' speed, and keeps them in the work dir as
+// verdict-<command>-<size>.txt and .csv. Exit code: 0 all passed, 1 something failed (a run that fails is a FAIL row), 2 bad
 // usage (--loads with two loads the same to the pascal, a --colza that is not executable), a
 // tolerances file that cannot be read, has a key of a wrong name, type or range, or names a
 // config or scene that is not in the source tree (tolerances.hpp), or a --workdir that cannot
@@ -60,6 +61,7 @@
 #include "code_runs.hpp"
 #include "options.hpp"
 #include "report.hpp"
+#include "result_files.hpp"
 #include "speed_tally.hpp"
 #include "tolerances.hpp"
 
@@ -175,8 +177,10 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "crosscheck: error: --workdir %s: %s\n", opt.workdir.string().c_str(), why.c_str());
     return kExitUsage;
   }
-  std::printf("crosscheck %s (--size %s): colza %s, YADE '%s', work in %s\n", opt.what.c_str(), opt.size.c_str(),
-              opt.colza.string().c_str(), opt.yade.c_str(), opt.workdir.string().c_str());
+  const std::string started = "crosscheck " + opt.what + " (--size " + opt.size + "): colza " + opt.colza.string() +
+                              ", YADE '" + opt.yade + "', tolerances " + opt.tolerances.string() + ", work in " +
+                              opt.workdir.string() + "\n";
+  std::printf("%s", started.c_str());
   std::fflush(stdout);
 
   forward_stop_signals();  // Ctrl-C or SIGTERM stops the runs in progress too (child_process.hpp)
@@ -203,8 +207,16 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "crosscheck: error: %s\n", e.what());
     return kExitFail;
   }
-  std::printf("\n");
-  report.print();
-  speed.print();
+  const std::string verdict = report.text() + "\n" + speed.text();
+  std::printf("\n%s", verdict.c_str());
+  // Kept beside the runs, whole or not at all (write_whole): the table and its rows as CSV.
+  const fs::path kept = opt.workdir / ("verdict-" + opt.what + "-" + opt.size);
+  try {
+    write_whole(kept.string() + ".txt", started + "\n" + verdict);
+    write_whole(kept.string() + ".csv", report.csv());
+    std::printf("crosscheck: this table is kept in %s.txt (its rows also in .csv)\n", kept.string().c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "crosscheck: warning: the table could not be kept: %s\n", e.what());
+  }
   return report.all_passed() ? 0 : kExitFail;
 }

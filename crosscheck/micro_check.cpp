@@ -12,8 +12,8 @@
 
 namespace crosscheck {
 
-void compare_scene_series(Report& report, const std::string& scene, const Csv& c, const Csv& y, double rel,
-                          double contacts_tol, const std::map<std::string, double>& floor) {
+void compare_scene_series(Report& report, const std::string& scene, const Csv& c, const Csv& y, const Tolerance& rel,
+                          const Tolerance& contacts_tol, const std::map<std::string, double>& floor) {
   if (c.names != y.names) throw std::runtime_error("the two series.csv have different columns");
   if (c.rows() != y.rows() || c.rows() == 0) throw std::runtime_error("different or no rows");
   if (c.at("step") != y.at("step")) throw std::runtime_error("rows are not at the same steps");
@@ -66,7 +66,7 @@ void compare_scene_series(Report& report, const std::string& scene, const Csv& c
     auto it = worst.find(kind);
     if (it == worst.end()) continue;
     const auto& [metric, cmax, ymax, who] = it->second;
-    report.check(scene + " " + kind + " (" + who + ")", cmax, ymax, metric, rel);
+    report.check(scene + " " + kind + " (" + who + ")", cmax, ymax, metric, Measure::kRelative, rel);
   }
   const auto& cc = c.at("contacts");
   const auto& yc = y.at("contacts");
@@ -76,7 +76,7 @@ void compare_scene_series(Report& report, const std::string& scene, const Csv& c
     cm = max_magnitude(cm, cc[r]);
     ym = max_magnitude(ym, yc[r]);
   }
-  report.check(scene + " contacts (max count, max |diff|)", cm, ym, dmax, contacts_tol, "%.0f");
+  report.check(scene + " contacts (max count, max |diff|)", cm, ym, dmax, Measure::kAbsolute, contacts_tol, "%.0f");
 }
 
 void check_micro(const CheckContext& ctx, Report& report) {
@@ -86,8 +86,9 @@ void check_micro(const CheckContext& ctx, Report& report) {
     report.fail("micro", "no [micro.scenes] in the tolerances file");
     return;
   }
-  const double default_rel = tol_number(ctx.tol, "micro.relative", 1e-6);
-  const double contacts_tol = tol_number(ctx.tol, "micro.contacts", 0.0);
+  const ToleranceSection micro{*ctx.tol["micro"].as_table(), "micro"};
+  const Tolerance default_rel = micro.get("relative", 1e-6);
+  const Tolerance contacts_tol = micro.get("contacts", 0.0);
   const std::map<std::string, double> floor = {
       {"position", tol_number(ctx.tol, "micro.floor.position", 1e-12)},
       {"velocity", tol_number(ctx.tol, "micro.floor.velocity", 1e-12)},
@@ -96,7 +97,7 @@ void check_micro(const CheckContext& ctx, Report& report) {
       {"torque", tol_number(ctx.tol, "micro.floor.torque", 1e-15)}};
   for (const auto& [key, value] : *list) {
     const std::string name(key.str());
-    const double rel = value.value<double>().value_or(default_rel);
+    const Tolerance rel = value.value<double>() ? micro.get("scenes." + name, 0.0) : default_rel;
     const fs::path config = scenes / (name + ".toml");
     const fs::path c_out = ctx.opt.workdir / "colza" / name, y_out = ctx.opt.workdir / "yade" / name;
     if (!ctx.runs.run_colza("scene", config, c_out) || !ctx.runs.run_yade("run_scene.py", config, y_out)) {

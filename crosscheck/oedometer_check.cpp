@@ -42,7 +42,7 @@ std::vector<double> travels_of(const toml::table& t) {
 }  // namespace
 
 void compare_oedometer_curves(Report& report, const std::string& label, const Csv& c, const Csv& y,
-                              const toml::table& t, const nlohmann::json& cs, const nlohmann::json& ys,
+                              const ToleranceSection& t, const nlohmann::json& cs, const nlohmann::json& ys,
                               const fs::path& config) {
   const auto& cs_ = c.at("piston_displacement");
   const auto& cf = c.at("piston_force");
@@ -51,12 +51,12 @@ void compare_oedometer_curves(Report& report, const std::string& label, const Cs
   // The same start: identical particle count and contact count at step 0.
   check_same_count(report, label + " particles", cs, ys, "particles");
   report.check(label + " contacts at the start", c.at("contacts")[0], y.at("contacts")[0],
-               std::abs(c.at("contacts")[0] - y.at("contacts")[0]), 0.0, "%.0f");
+               std::abs(c.at("contacts")[0] - y.at("contacts")[0]), Measure::kAbsolute, fixed_tolerance(0.0), "%.0f");
   // Early rows: before chaos amplifies rounding, the curves must coincide.
-  const std::size_t early = static_cast<std::size_t>(t.at_path("early_rows").value_or(10));
+  const std::size_t early = static_cast<std::size_t>(t.table.at_path("early_rows").value_or(10));
   const MaxDifference start = max_difference(cf, yf, std::min({early, c.rows(), y.rows()}));
   report.check(label + " force, first " + std::to_string(early) + " rows (max |diff| / max F)", start.max_colza,
-               start.max_yade, start.relative, tol_number(t, "early_relative", 1e-5));
+               start.max_yade, start.relative, Measure::kRelative, t.get("early_relative", 1e-5));
   // Logged range: from the fit's lower force on, up to the smaller final travel.
   const double f_min = fit_force_min(config);
   double s_lo = std::numeric_limits<double>::quiet_NaN();
@@ -69,16 +69,17 @@ void compare_oedometer_curves(Report& report, const std::string& label, const Cs
   const RmsDifference d = rms_difference(cs_, cf, ysd, yf, s_lo, s_hi);
   report.check(label + " force rms difference / rms force (" + std::to_string(d.n) + " rows, travel " +
                    fmt(1e3 * s_lo, "%.2f") + "-" + fmt(1e3 * s_hi, "%.2f") + " mm)",
-               d.rms_colza, d.rms_yade, d.relative, tol_number(t, "rms_relative", 0.05));
-  for (const double s : travels_of(t)) {
-    const std::string metric = label + " force at " + fmt(1e3 * s, "%.1f") + " mm travel (N)";
+               d.rms_colza, d.rms_yade, d.relative, Measure::kRelative, t.get("rms_relative", 0.05));
+  for (const double s : travels_of(t.table)) {
+    const std::string metric = label + " force at " + fmt(1e3 * s, "%.1f") + " mm travel (N; difference / colza's)";
     // Said as such: the force there is not defined, rather than "not finite".
     if (s > cs_.back() || s > ysd.back()) {
       report.fail(metric, std::string(s > cs_.back() ? "colza's" : "YADE's") + " curve stops before this travel");
       continue;
     }
     const double fc = interpolate(cs_, cf, s), fy = interpolate(ysd, yf, s);
-    report.check(metric, fc, fy, std::abs(fc - fy) / std::abs(fc), tol_number(t, "force_at_relative", 0.1), "%.1f");
+    report.check(metric, fc, fy, std::abs(fc - fy) / std::abs(fc), Measure::kRelative, t.get("force_at_relative", 0.1),
+                 "%.1f");
   }
   report.info(label + " travel at stop (mm)", fmt(1e3 * cs_.back(), "%.3f"), fmt(1e3 * ysd.back(), "%.3f"),
               cs.value("stop_reason", std::string("?")) + " / " + ys.value("stop_reason", std::string("?")));
@@ -97,7 +98,7 @@ namespace {
 // then the mean force of each code at every travel, judged by Welch's t test at alpha / the
 // number of travels (crosscheck/README.md, "Ensembles"). Nothing when the table asks for
 // fewer than two realisations.
-void compare_ensemble(const CheckContext& ctx, Report& report, const std::string& label, const toml::table& t,
+void compare_ensemble(const CheckContext& ctx, Report& report, const std::string& label, const ToleranceSection& t,
                       const fs::path& config, const fs::path& work, const fs::path& c_out0, const fs::path& y_out0) {
   const EnsembleSpec e = read_ensemble(t);
   if (e.realisations < 2) return;
@@ -131,7 +132,7 @@ void compare_ensemble(const CheckContext& ctx, Report& report, const std::string
   }
   if (!run_realisations(runs, report, what, e.amplitude)) return;
 
-  const std::vector<double> travels = travels_of(t);
+  const std::vector<double> travels = travels_of(t.table);
   std::vector<std::vector<double>> c_force(travels.size()), y_force(travels.size());
   for (std::size_t k = 0; k < e.realisations; ++k) {
     const std::string realisation = what + " realisation " + std::to_string(k);
@@ -152,7 +153,7 @@ void compare_ensemble(const CheckContext& ctx, Report& report, const std::string
       return;
     }
   }
-  const double alpha_row = e.alpha / static_cast<double>(std::max<std::size_t>(1, travels.size()));
+  const Tolerance alpha_row = e.alpha_per_row(travels.size());
   for (std::size_t j = 0; j < travels.size(); ++j)
     compare_means(report, what + " force at " + fmt(1e3 * travels[j], "%.1f") + " mm travel", "N",
                   summarise(c_force[j]), summarise(y_force[j]), 1.0, "%.1f", alpha_row);
@@ -163,6 +164,7 @@ void compare_ensemble(const CheckContext& ctx, Report& report, const std::string
 void check_oedometer(const CheckContext& ctx, Report& report, const std::string& size) {
   const toml::table* t = size_section(ctx, report, "oedometer", size);
   if (!t) return;
+  const ToleranceSection tolerances{*t, "oedometer." + size};
   fs::path config = ctx.opt.source / t->at_path("config").value_or(std::string());
   const fs::path work = ctx.opt.workdir / ("oedometer_" + size);
   fs::create_directories(work);
@@ -204,12 +206,12 @@ void check_oedometer(const CheckContext& ctx, Report& report, const std::string&
   }
   ctx.speed.add(c_out, y_out, "oedometer " + size);
   try {
-    compare_oedometer_curves(report, "oed " + size, read_csv(c_out / "curve.csv"), read_csv(y_out / "curve.csv"), *t,
+    compare_oedometer_curves(report, "oed " + size, read_csv(c_out / "curve.csv"), read_csv(y_out / "curve.csv"), tolerances,
                              read_json(c_out / "summary.json"), read_json(y_out / "summary.json"), config);
   } catch (const std::exception& e) {
     report.fail("oedometer " + size, e.what());
   }
-  compare_ensemble(ctx, report, "oed " + size, *t, config, work, c_out, y_out);
+  compare_ensemble(ctx, report, "oed " + size, tolerances, config, work, c_out, y_out);
 }
 
 }  // namespace crosscheck

@@ -74,6 +74,19 @@ nlohmann::json read_json(const fs::path& file) {
   }
 }
 
+void write_whole(const fs::path& file, const std::string& text) {
+  const fs::path partial = file.string() + ".partial";
+  {
+    std::ofstream o(partial, std::ios::binary | std::ios::trunc);
+    o << text;
+    o.flush();
+    if (!o) throw std::runtime_error("cannot write " + partial.string());
+  }
+  std::error_code ec;
+  fs::rename(partial, file, ec);
+  if (ec) throw std::runtime_error("cannot rename " + partial.string() + " to " + file.string() + ": " + ec.message());
+}
+
 double tol_number(const toml::table& t, const std::string& path, double fallback) {
   const auto v = t.at_path(path).value<double>();
   return v ? *v : fallback;

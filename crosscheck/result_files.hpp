@@ -30,6 +30,10 @@ std::string read_text(const fs::path& file);
 // An empty object if the file is missing or not JSON (a run that did not finish).
 nlohmann::json read_json(const fs::path& file);
 
+// Writes `text` to `file` through `<file>.partial` and a rename, so the file is whole or as it
+// was. Throws std::runtime_error naming the file if it cannot.
+void write_whole(const fs::path& file, const std::string& text);
+
 // The number at `path` (e.g. "micro.floor.force") of a tolerance table, or `fallback`.
 double tol_number(const toml::table& t, const std::string& path, double fallback);
 

@@ -185,17 +185,7 @@ std::string damaged_result(const fs::path& out) {
 }
 
 void write_stamp(const fs::path& out, const std::string& stamp) {
-  const fs::path file = stamp_file(out);
-  const fs::path partial = file.string() + ".partial";
-  {
-    std::ofstream o(partial, std::ios::binary | std::ios::trunc);
-    o << stamp << result_lines(out);
-    o.flush();
-    if (!o) throw std::runtime_error("cannot write " + partial.string());
-  }
-  std::error_code ec;
-  fs::rename(partial, file, ec);
-  if (ec) throw std::runtime_error("cannot rename " + partial.string() + " to " + file.string() + ": " + ec.message());
+  write_whole(stamp_file(out), stamp + result_lines(out));
 }
 
 std::string first_change(const std::string& before, const std::string& now) {

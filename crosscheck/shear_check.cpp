@@ -22,12 +22,12 @@
 
 namespace crosscheck {
 
-void compare_shear_start(Report& report, const std::string& label, const Csv& c, const Csv& y, double relative) {
+void compare_shear_start(Report& report, const std::string& label, const Csv& c, const Csv& y, const Tolerance& relative) {
   if (c.rows() != y.rows() || c.rows() == 0) throw std::runtime_error("different numbers of curve rows");
   for (const char* q : {"shear_stress", "normal_stress"}) {
     const MaxDifference d = max_difference(c.at(q), y.at(q), c.rows());
     report.check(label + " start, " + q + " (" + std::to_string(c.rows()) + " rows, max |diff| / max)", d.max_colza,
-                 d.max_yade, d.relative, relative);
+                 d.max_yade, d.relative, Measure::kRelative, relative);
   }
   // max_magnitude, not std::max, so that a count that is not finite is not skipped; each code's
   // shown count (its last contact count) is NaN then, and the row says which code's was.
@@ -40,7 +40,7 @@ void compare_shear_start(Report& report, const std::string& label, const Csv& c,
     }
   const double nan = std::numeric_limits<double>::quiet_NaN();
   report.check(label + " start, contacts and bonds (max |diff|)", std::isnan(c_max_count) ? nan : c.at("contacts").back(),
-               std::isnan(y_max_count) ? nan : y.at("contacts").back(), dmax, 0.0, "%.0f");
+               std::isnan(y_max_count) ? nan : y.at("contacts").back(), dmax, Measure::kAbsolute, fixed_tolerance(0.0), "%.0f");
 }
 
 namespace {
@@ -111,7 +111,7 @@ void compare_deterministic_start(const CheckContext& ctx, const ShearSetting& s,
   }
   try {
     compare_shear_start(report, s.label, read_csv(c_out / "curve.csv"), read_csv(y_out / "curve.csv"),
-                        tol_number(s.t, "early_relative", 1e-6));
+                        s.tolerances().get("early_relative", 1e-6));
   } catch (const std::exception& ex) {
     report.fail(s.label + " deterministic start", ex.what());
   }
@@ -121,12 +121,13 @@ void compare_deterministic_start(const CheckContext& ctx, const ShearSetting& s,
 // when the ensemble judges it (`by_ensemble`), an information row: one realisation's scatter
 // is too wide for a tolerance with any power (crosscheck/README.md, "Ensembles").
 void check_one_realisation(Report& report, bool by_ensemble, const std::string& metric, double colza, double yade,
-                           double difference, const ShearSetting& s, const char* key, double fallback, const char* f) {
+                           double difference, Measure measure, const ShearSetting& s, const char* key, double fallback,
+                           const char* f) {
   if (by_ensemble)
     report.info(metric + ", one realisation", fmt(colza, f), fmt(yade, f),
                 "difference " + fmt(difference, "%.3g") + ": judged by the ensemble");
   else
-    report.check(metric, colza, yade, difference, tol_number(s.t, key, fallback), f);
+    report.check(metric, colza, yade, difference, measure, s.tolerances().get(key, fallback), f);
 }
 
 // One load, full protocol, in both codes: the rows of its comparison, and both codes' shear
@@ -151,25 +152,28 @@ std::optional<std::pair<double, double>> compare_load(const CheckContext& ctx, c
     check_same_count(report, l + " particles", cs, ys, "particles");
     const bool both = cs.value("consolidated", false) && ys.value("consolidated", false);
     report.add(Row{l + " consolidated", cs.value("consolidated", false) ? "yes" : "no",
-                   ys.value("consolidated", false) ? "yes" : "no", "-", "both", both, false});
+                   ys.value("consolidated", false) ? "yes" : "no", "-", "", "both", both, false, "(fixed)"});
     report.info(l + " consolidation time (s)", fmt(cs.value("consolidation_time", 0.0)),
                 fmt(ys.value("consolidation_time", 0.0)), "chaotic, not compared");
     const double c_tau = cs.value("shear_strength", 0.0), y_tau = ys.value("shear_strength", 0.0);
-    check_one_realisation(report, by_ensemble, l + " shear strength (kPa)", 1e-3 * c_tau, 1e-3 * y_tau,
-                          std::abs(c_tau - y_tau) / std::abs(c_tau), s, "strength_relative", 0.1, "%.3f");
+    check_one_realisation(report, by_ensemble, l + " shear strength (kPa; difference / colza's)", 1e-3 * c_tau,
+                          1e-3 * y_tau, std::abs(c_tau - y_tau) / std::abs(c_tau), Measure::kRelative, s,
+                          "strength_relative", 0.1, "%.3f");
     const double c_sig = cs.value("mean_normal_stress", 0.0), y_sig = ys.value("mean_normal_stress", 0.0);
-    report.check(l + " mean normal stress (kPa)", 1e-3 * c_sig, 1e-3 * y_sig, std::abs(c_sig - y_sig) / std::abs(c_sig),
-                 tol_number(s.t, "normal_stress_relative", 0.01), "%.3f");
+    report.check(l + " mean normal stress (kPa; difference / colza's)", 1e-3 * c_sig, 1e-3 * y_sig,
+                 std::abs(c_sig - y_sig) / std::abs(c_sig), Measure::kRelative,
+                 s.tolerances().get("normal_stress_relative", 0.01), "%.3f");
     // shear stress over the strength window, YADE interpolated at colza's offsets
     const RmsDifference d = rms_difference(c.at("shear_displacement"), c.at("shear_stress"),
                                            y.at("shear_displacement"), y.at("shear_stress"), window_start, window_end);
     check_one_realisation(report, by_ensemble,
                           l + " shear stress rms difference / rms (" + std::to_string(d.n) + " rows, " +
                               fmt(1e3 * window_start, "%.2f") + "-" + fmt(1e3 * window_end, "%.2f") + " mm, kPa)",
-                          1e-3 * d.rms_colza, 1e-3 * d.rms_yade, d.relative, s, "curve_rms_relative", 0.2, "%.4g");
+                          1e-3 * d.rms_colza, 1e-3 * d.rms_yade, d.relative, Measure::kRelative, s, "curve_rms_relative",
+                          0.2, "%.4g");
     const double c_out_n = cs.value("particles_outside", kMissingValue), y_out_n = ys.value("particles_outside", kMissingValue);
-    report.add(Row{l + " particles outside the box", fmt(c_out_n, "%.0f"), fmt(y_out_n, "%.0f"), "-", "0",
-                   c_out_n == 0.0 && y_out_n == 0.0, false});
+    report.add(Row{l + " particles outside the box", fmt(c_out_n, "%.0f"), fmt(y_out_n, "%.0f"), "-", "", "0",
+                   c_out_n == 0.0 && y_out_n == 0.0, false, "(fixed)"});
     return std::make_pair(c_tau, y_tau);
   } catch (const std::exception& e) {
     report.fail(l, e.what());
@@ -218,7 +222,7 @@ void check_shear(const CheckContext& ctx, Report& report, const std::string& siz
 
   // 3. The loads, full protocol (with an ensemble to follow, one realisation's strength and
   // curve rows are information only).
-  const bool by_ensemble = read_ensemble(*t).realisations >= 2;
+  const bool by_ensemble = read_ensemble(s.tolerances()).realisations >= 2;
   std::vector<double> c_strength, y_strength;
   for (double sigma : loads)
     if (const auto strengths = compare_load(ctx, s, report, config, sigma, window_start, window_end, by_ensemble)) {
@@ -230,9 +234,9 @@ void check_shear(const CheckContext& ctx, Report& report, const std::string& siz
     const auto [cc, cphi] = mohr_coulomb(loads, c_strength);
     const auto [yc, yphi] = mohr_coulomb(loads, y_strength);
     check_one_realisation(report, by_ensemble, s.label + " cohesion C (kPa)", 1e-3 * cc, 1e-3 * yc,
-                          1e-3 * std::abs(cc - yc), s, "cohesion_absolute_kpa", 5.0, "%.3f");
+                          1e-3 * std::abs(cc - yc), Measure::kAbsolute, s, "cohesion_absolute_kpa", 5.0, "%.3f");
     check_one_realisation(report, by_ensemble, s.label + " friction angle Phi (deg)", cphi, yphi, std::abs(cphi - yphi),
-                          s, "friction_angle_absolute_deg", 5.0, "%.2f");
+                          Measure::kAbsolute, s, "friction_angle_absolute_deg", 5.0, "%.2f");
   }
 
   // 5. More realisations of every load: means against standard errors.

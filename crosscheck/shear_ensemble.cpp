@@ -24,7 +24,7 @@ namespace crosscheck {
 
 void compare_shear_ensemble(const CheckContext& ctx, const ShearSetting& s, Report& report, const toml::table& doc,
                             const std::vector<double>& loads) {
-  const EnsembleSpec e = read_ensemble(s.t);
+  const EnsembleSpec e = read_ensemble(s.tolerances());
   if (e.realisations < 2) return;
   const std::string what = s.label + " ensemble (" + std::to_string(e.realisations) + " realisations)";
   const fs::path sample = doc.at_path("shear_box.packing_file").value_or(std::string());
@@ -73,7 +73,7 @@ void compare_shear_ensemble(const CheckContext& ctx, const ShearSetting& s, Repo
   // Rows judged: one per load, the mean relative difference, C and Phi (with two loads or
   // more); each at alpha / rows.
   const std::size_t rows = loads.size() + 1 + (loads.size() >= 2 ? 2 : 0);
-  const double alpha_row = e.alpha / static_cast<double>(rows);
+  const Tolerance alpha_row = e.alpha_per_row(rows);
   for (std::size_t l = 0; l < loads.size(); ++l)
     compare_means(report, what + " " + fmt(1e-3 * loads[l], "%.2f") + " kPa strength", "kPa", colza[l], yade[l], 1e-3,
                   "%.3f", alpha_row);

@@ -19,6 +19,7 @@ struct ShearSetting {
   std::string label;  // "shear <size>"
   const toml::table& t;
   fs::path scene, work;
+  ToleranceSection tolerances() const { return {t, base}; }
 };
 
 // `doc` written as `name` into the work folder, for both codes (throws if it cannot be).

@@ -21,21 +21,26 @@ void SpeedTally::add(const fs::path& colza_out, const fs::path& yade_out, const 
   if (what_.find(what) == std::string::npos) what_ += (what_.empty() ? "" : ", ") + what;
 }
 
-void SpeedTally::print() const {
-  if (yade_particle_steps_ <= 0.0) {
-    std::printf("\nspeed: measured on the oedometer and shear runs (the micro scenes are too small to time)\n");
-    return;
-  }
+std::string SpeedTally::text() const {
+  if (yade_particle_steps_ <= 0.0) return "speed: measured on the oedometer and shear runs (the micro scenes are too small to time)\n";
   const double c = colza_particle_steps_ / colza_seconds_;
   const double y = yade_particle_steps_ / yade_seconds_;
   const double ye = yade_engine_seconds_ > 0 ? yade_particle_steps_ / yade_engine_seconds_ : 0.0;
-  std::printf("\nspeed on the same loadings (%s; colza %.3g, YADE %.3g particle-steps; single thread, from each "
+  char line[256];
+  std::string out;
+  std::snprintf(line, sizeof line, "speed on the same loadings (%s; colza %.3g, YADE %.3g particle-steps; single thread, from each "
               "run's wall time):\n",
               what_.c_str(), colza_particle_steps_, yade_particle_steps_);
-  std::printf("  colza                                   %10.3g particle-steps/s\n", c);
-  std::printf("  YADE (whole loop incl. Python runners)  %10.3g particle-steps/s   colza/YADE = %.1f\n", y, c / y);
-  if (ye > 0)
-    std::printf("  YADE (C++ engines only)                 %10.3g particle-steps/s   colza/YADE = %.1f\n", ye, c / ye);
+  out += line;
+  std::snprintf(line, sizeof line, "  colza                                   %10.3g particle-steps/s\n", c);
+  out += line;
+  std::snprintf(line, sizeof line, "  YADE (whole loop incl. Python runners)  %10.3g particle-steps/s   colza/YADE = %.1f\n", y, c / y);
+  out += line;
+  if (ye > 0) {
+    std::snprintf(line, sizeof line, "  YADE (C++ engines only)                 %10.3g particle-steps/s   colza/YADE = %.1f\n", ye, c / ye);
+    out += line;
+  }
+  return out;
 }
 
 }  // namespace crosscheck

@@ -14,7 +14,8 @@ class SpeedTally {
   // load's differ a little (consolidation ends when the stress holds, a chaotic moment), so
   // each code's rate is its own particle-steps / seconds. Runs without a rate are skipped.
   void add(const fs::path& colza_out, const fs::path& yade_out, const std::string& what);
-  void print() const;
+  // The lines crosscheck prints after its table (and keeps with it).
+  std::string text() const;
 
  private:
   double colza_particle_steps_ = 0.0, colza_seconds_ = 0.0;

@@ -23,6 +23,8 @@ using crosscheck::Report;
 using crosscheck::Row;
 
 const double kNaN = std::nan("");
+const crosscheck::Tolerance kRelative{1e-6, "micro.relative"};
+const crosscheck::Tolerance kContacts = crosscheck::fixed_tolerance(0.0);
 
 // The row whose metric contains `part` (the test fails if there is none).
 Row row_of(const Report& report, const std::string& part) {
@@ -56,7 +58,7 @@ const std::map<std::string, double> kFloor = {
 
 TEST(CrosscheckComparisons, MicroSeriesThatAgreePass) {
   Report report;
-  compare_scene_series(report, "scene", scene_series(), scene_series(), 1e-6, 0.0, kFloor);
+  compare_scene_series(report, "scene", scene_series(), scene_series(), kRelative, kContacts, kFloor);
   EXPECT_EQ(report.rows().size(), 6u);  // five quantities and the contacts
   EXPECT_TRUE(report.all_passed());
 }
@@ -69,7 +71,7 @@ TEST(CrosscheckComparisons, MicroSeriesOfNaNFailEveryRow) {
   for (std::size_t k = 1; k < yade.columns.size(); ++k)
     for (double& v : yade.columns[k]) v = kNaN;
   Report report;
-  compare_scene_series(report, "scene", colza, yade, 1e-6, 0.0, kFloor);
+  compare_scene_series(report, "scene", colza, yade, kRelative, kContacts, kFloor);
   ASSERT_EQ(report.rows().size(), 6u);
   for (const Row& r : report.rows()) {
     EXPECT_FALSE(r.pass) << r.metric;
@@ -83,7 +85,7 @@ TEST(CrosscheckComparisons, MicroSeriesWithOneValueThatIsNotFinite) {
   Csv yade = colza;
   yade.columns[5][2] = kNaN;  // p0_vy, row 2
   Report report;
-  compare_scene_series(report, "scene", colza, yade, 1e-6, 0.0, kFloor);
+  compare_scene_series(report, "scene", colza, yade, kRelative, kContacts, kFloor);
   EXPECT_FALSE(row_of(report, "velocity (p0)").pass);
   EXPECT_TRUE(says_not_finite(row_of(report, "velocity (p0)")));
   EXPECT_TRUE(row_of(report, "position (p0)").pass);
@@ -92,14 +94,14 @@ TEST(CrosscheckComparisons, MicroSeriesWithOneValueThatIsNotFinite) {
   Csv colza_inf = colza;
   colza_inf.columns[13][1] = std::numeric_limits<double>::infinity();  // p0_tx, row 1
   Report colza_report;
-  compare_scene_series(colza_report, "scene", colza_inf, colza, 1e-6, 0.0, kFloor);
+  compare_scene_series(colza_report, "scene", colza_inf, colza, kRelative, kContacts, kFloor);
   EXPECT_FALSE(row_of(colza_report, "torque (p0)").pass);
   EXPECT_EQ(row_of(colza_report, "torque (p0)").difference, "a colza value not finite");
 
   Csv yade_contacts = colza;
   yade_contacts.columns.back()[3] = kNaN;
   Report contacts_report;
-  compare_scene_series(contacts_report, "scene", colza, yade_contacts, 1e-6, 0.0, kFloor);
+  compare_scene_series(contacts_report, "scene", colza, yade_contacts, kRelative, kContacts, kFloor);
   EXPECT_FALSE(row_of(contacts_report, "contacts").pass);
   EXPECT_TRUE(says_not_finite(row_of(contacts_report, "contacts")));
 }
@@ -113,12 +115,12 @@ TEST(CrosscheckComparisons, MicroZeroSignalWithAZeroFloor) {
   std::map<std::string, double> no_floor = kFloor;
   no_floor["torque"] = 0.0;
   Report same;
-  compare_scene_series(same, "scene", colza, colza, 1e-6, 0.0, no_floor);
+  compare_scene_series(same, "scene", colza, colza, kRelative, kContacts, no_floor);
   EXPECT_TRUE(row_of(same, "torque (p0)").pass);
   Csv yade = colza;
   yade.columns[14][2] = 1e-30;
   Report other;
-  compare_scene_series(other, "scene", colza, yade, 1e-6, 0.0, no_floor);
+  compare_scene_series(other, "scene", colza, yade, kRelative, kContacts, no_floor);
   EXPECT_FALSE(row_of(other, "torque (p0)").pass);
 }
 
@@ -150,7 +152,8 @@ Report compare_oedometer(const Csv& yade, const nlohmann::json& colza_summary = 
                          const nlohmann::json& yade_summary = kYadeSummary) {
   const colza::testing::ScratchDir dir;
   Report report;
-  compare_oedometer_curves(report, "oed", oedometer_curve(), yade, oedometer_tolerances(), colza_summary,
+  const toml::table tolerances = oedometer_tolerances();
+  compare_oedometer_curves(report, "oed", oedometer_curve(), yade, {tolerances, "oedometer.small"}, colza_summary,
                            yade_summary, dir / "no-config.toml");
   return report;
 }
@@ -175,6 +178,43 @@ TEST(CrosscheckComparisons, OedometerFailsWithoutYadesPatchCount) {
   yade_summary["foreign_patch_contacts"] = 2;
   const Report touched = compare_oedometer(oedometer_curve(), kColzaSummary, yade_summary);
   EXPECT_FALSE(row_of(touched, "YADE cylinder patches").pass);
+}
+
+// Each row names the tolerances file's key that judged it and what kind of difference it is
+// (a walk-through read "mean normal stress (kPa) ... 4.298e-03" as kPa): a key the file has,
+// one it leaves out (the check's own value, "(default)"), and an agreement the check fixes.
+TEST(CrosscheckComparisons, RowsNameTheirToleranceKeyAndKind) {
+  const Report report = compare_oedometer(oedometer_curve());
+  const Row rms = row_of(report, "rms difference");
+  EXPECT_EQ(rms.key, "oedometer.small.rms_relative");
+  EXPECT_EQ(rms.measure, "rel");
+  const Row particles = row_of(report, "oed particles");
+  EXPECT_EQ(particles.key, "(fixed)");
+  EXPECT_EQ(particles.measure, "abs");
+
+  toml::table without = oedometer_tolerances();
+  without.erase("early_relative");
+  const crosscheck::Tolerance early = crosscheck::ToleranceSection{without, "oedometer.small"}.get("early_relative", 1e-5);
+  EXPECT_EQ(early.key, "oedometer.small.early_relative (default)");
+  EXPECT_EQ(early.value, 1e-5);
+}
+
+// The table as printed and kept: every column with its header, the legend of the kinds and
+// keys, the count; and its CSV with a metric holding a comma and a quote quoted.
+TEST(CrosscheckComparisons, TheTableAndItsCsvCarryEveryColumn) {
+  Report report;
+  report.check("shear 25.75 kPa \"mean\", normal stress", 25.75, 25.80, 0.002, crosscheck::Measure::kRelative,
+               {0.01, "shear.small.normal_stress_relative"});
+  report.fail("shear 78.75 kPa", "run failed");
+  const std::string text = report.text();
+  for (const char* part : {"tolerance key", "kind", "shear.small.normal_stress_relative", "PASS", "FAIL",
+                           "kind: rel = |colza - YADE|", "crosscheck: 1 passed, 1 failed"})
+    EXPECT_NE(text.find(part), std::string::npos) << part << " not in\n" << text;
+  EXPECT_EQ(report.csv(),
+            "metric,colza,yade,difference,kind,tolerance,result,tolerance_key\n"
+            "\"shear 25.75 kPa \"\"mean\"\", normal stress\",25.75,25.8,2.000e-03,rel,1.0e-02,PASS,"
+            "shear.small.normal_stress_relative\n"
+            "shear 78.75 kPa,-,-,run failed,,-,FAIL,\n");
 }
 
 // A summary without its particle count fails the count's row (both missing read as 0 and
@@ -220,7 +260,7 @@ Csv shear_start() {
 
 TEST(CrosscheckComparisons, ShearStartWithValuesThatAreNotFinite) {
   Report same;
-  compare_shear_start(same, "shear", shear_start(), shear_start(), 1e-6);
+  compare_shear_start(same, "shear", shear_start(), shear_start(), kRelative);
   EXPECT_EQ(same.rows().size(), 3u);
   EXPECT_TRUE(same.all_passed());
 
@@ -228,7 +268,7 @@ TEST(CrosscheckComparisons, ShearStartWithValuesThatAreNotFinite) {
   for (double& v : yade.columns[0]) v = kNaN;  // shear stress
   yade.columns[3][1] = kNaN;                   // one bond count
   Report report;
-  compare_shear_start(report, "shear", shear_start(), yade, 1e-6);
+  compare_shear_start(report, "shear", shear_start(), yade, kRelative);
   const Row stress = row_of(report, "shear_stress");
   EXPECT_FALSE(stress.pass);
   EXPECT_EQ(stress.difference, "a YADE value not finite");
