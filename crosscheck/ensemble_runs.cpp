@@ -28,20 +28,33 @@ void write_perturbed_packing(const std::string& text, const fs::path& file, std:
   if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 
-bool run_realisations(const std::vector<RealisationRun>& runs, Report& report, const std::string& what, double amplitude) {
-  std::printf("crosscheck: %s: %zu more runs of each code (packings moved by up to %g m)...\n", what.c_str(),
-              runs.size() / 2, amplitude);
-  std::fflush(stdout);
+namespace {
+
+// Runs one code's runs; a FAIL row per run that failed; true if none did.
+bool run_all(const std::vector<RealisationRun>& runs, Report& report, const std::string& what) {
   std::vector<std::function<bool()>> jobs;
   for (const RealisationRun& r : runs) jobs.push_back(r.run);
   const std::vector<bool> ok = run_in_parallel(jobs);
   bool all = true;
   for (std::size_t j = 0; j < runs.size(); ++j)
     if (!ok[j]) {
-      report.fail(what, runs[j].out.filename().string() + " failed (" + runs[j].out.string() + ".log)");
+      report.fail(what, runs[j].out.filename().string() + " failed (" + runs[j].out.string() + ".failed.log)");
       all = false;
     }
   return all;
+}
+
+}  // namespace
+
+bool run_realisations(const RealisationRuns& runs, Report& report, const std::string& what, double amplitude) {
+  std::printf("crosscheck: %s: %zu more runs of each code (packings moved by up to %g m), colza's first...\n",
+              what.c_str(), runs.colza.size(), amplitude);
+  std::fflush(stdout);
+  if (!run_all(runs.colza, report, what)) {
+    report.fail(what, "YADE's runs not started: colza's realisations are not all there");
+    return false;
+  }
+  return run_all(runs.yade, report, what);
 }
 
 std::string mean_and_error(double mean, double se, const char* f) { return fmt(mean, f) + " +- " + fmt(se, f); }

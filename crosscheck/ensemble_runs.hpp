@@ -34,9 +34,15 @@ struct RealisationRun {
   fs::path out;
   std::function<bool()> run;
 };
-// Says what it starts (`what`, the runs per code, the perturbation amplitude a in m), runs them
-// kParallelRuns at a time; a FAIL row per run that failed; true if none did.
-bool run_realisations(const std::vector<RealisationRun>& runs, Report& report, const std::string& what, double amplitude);
+// The realisations' runs of each code.
+struct RealisationRuns {
+  std::vector<RealisationRun> colza, yade;
+};
+// Says what it starts (`what`, the runs per code, the perturbation amplitude a in m) and runs
+// them kParallelRuns at a time: colza's first, then YADE's only if every colza run succeeded
+// (the ensemble is judged on all realisations or none, and YADE's runs are the long ones). A
+// FAIL row per run that failed; true if none did.
+bool run_realisations(const RealisationRuns& runs, Report& report, const std::string& what, double amplitude);
 
 // "21.910 +- 0.780"
 std::string mean_and_error(double mean, double se, const char* f = "%.3f");

@@ -104,7 +104,7 @@ void compare_ensemble(const CheckContext& ctx, Report& report, const std::string
   if (e.realisations < 2) return;
   const std::string what = label + " ensemble (" + std::to_string(e.realisations) + " realisations)";
   std::vector<fs::path> c_out{c_out0}, y_out{y_out0};
-  std::vector<RealisationRun> runs;
+  RealisationRuns runs;
   try {
     toml::table doc = toml::parse_file(config.string());
     toml::table* oedometer = doc["oedometer"].as_table();
@@ -121,8 +121,8 @@ void compare_ensemble(const CheckContext& ctx, Report& report, const std::string
       const fs::path config_k = write_run_config(work / (config.stem().string() + r + ".toml"), doc, config);
       c_out.push_back(work / ("colza" + r));
       y_out.push_back(work / ("yade" + r));
-      runs.push_back({c_out.back(), [&ctx, config_k, out = c_out.back()] { return ctx.runs.run_colza("oedometer", config_k, out); }});
-      runs.push_back({y_out.back(), [&ctx, config_k, out = y_out.back()] {
+      runs.colza.push_back({c_out.back(), [&ctx, config_k, out = c_out.back()] { return ctx.runs.run_colza("oedometer", config_k, out); }});
+      runs.yade.push_back({y_out.back(), [&ctx, config_k, out = y_out.back()] {
                         return ctx.runs.run_yade("run_oedometer.py", config_k, out);
                       }});
     }

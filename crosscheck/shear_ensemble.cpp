@@ -30,7 +30,7 @@ void compare_shear_ensemble(const CheckContext& ctx, const ShearSetting& s, Repo
   const fs::path sample = doc.at_path("shear_box.packing_file").value_or(std::string());
 
   // Realisation k >= 1 of every load: its packing and config, then both codes.
-  std::vector<RealisationRun> runs;
+  RealisationRuns runs;
   try {
     const std::string packing = read_text(sample);
     for (double sigma : loads)
@@ -44,8 +44,8 @@ void compare_shear_ensemble(const CheckContext& ctx, const ShearSetting& s, Repo
         const fs::path config = write_run_config(s.work / ("shear_" + s.size + "_" + name + ".toml"), d, s.scene);
         const std::vector<std::string> arg = normal_stress_argument(sigma);
         const fs::path c_out = load_run_folder(s, "colza", sigma, k), y_out = load_run_folder(s, "yade", sigma, k);
-        runs.push_back({c_out, [&ctx, config, arg, c_out] { return ctx.runs.run_colza("shear", config, c_out, {}, arg); }});
-        runs.push_back({y_out, [&ctx, config, arg, y_out] { return ctx.runs.run_yade("run_shear.py", config, y_out, arg); }});
+        runs.colza.push_back({c_out, [&ctx, config, arg, c_out] { return ctx.runs.run_colza("shear", config, c_out, {}, arg); }});
+        runs.yade.push_back({y_out, [&ctx, config, arg, y_out] { return ctx.runs.run_yade("run_shear.py", config, y_out, arg); }});
       }
   } catch (const std::exception& ex) {
     report.fail(what, ex.what());

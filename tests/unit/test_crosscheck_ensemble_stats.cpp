@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "crosscheck/curve_math.hpp"  // line_weights
+#include "crosscheck/ensemble_runs.hpp"
 #include "crosscheck/ensemble_stats.hpp"
 
 namespace {
@@ -131,6 +132,29 @@ TEST(CrosscheckEnsembleStats, PerturbsCoordinatesOnlyAndRepeatably) {
   EXPECT_THROW(perturbed_packing("0.1 0.2 0.3 0.004 5\n", 1, a), std::runtime_error);
   // Blank and indented comment lines pass through, as colza's reader skips them.
   EXPECT_EQ(perturbed_packing("  # note\n \t\r\n", 1, a), "  # note\n \t\r\n");
+}
+
+// An ensemble is judged on all its realisations or none: when a colza realisation fails,
+// YADE's runs (the long ones: hours at full size) are not started, and the table says why (a
+// walk-through saw YADE run its half of every pair after colza's had failed).
+TEST(CrosscheckEnsembleRuns, YadeRunsOnlyWhenEveryColzaRealisationDid) {
+  int yade_runs = 0;
+  const auto yade = [&] { return ++yade_runs, true; };
+  crosscheck::RealisationRuns runs;
+  runs.colza = {{"colza-r1", [] { return true; }}, {"colza-r2", [] { return false; }}};
+  runs.yade = {{"yade-r1", yade}, {"yade-r2", yade}};
+  crosscheck::Report report;
+  EXPECT_FALSE(crosscheck::run_realisations(runs, report, "ensemble", 1e-12));
+  EXPECT_EQ(yade_runs, 0);
+  ASSERT_EQ(report.rows().size(), 2u);
+  EXPECT_EQ(report.rows()[0].difference, "colza-r2 failed (colza-r2.failed.log)");
+  EXPECT_NE(report.rows()[1].difference.find("YADE's runs not started"), std::string::npos);
+
+  runs.colza[1].run = [] { return true; };
+  crosscheck::Report all_ran;
+  EXPECT_TRUE(crosscheck::run_realisations(runs, all_ran, "ensemble", 1e-12));
+  EXPECT_EQ(yade_runs, 2);
+  EXPECT_TRUE(all_ran.rows().empty());
 }
 
 }  // namespace
