@@ -37,12 +37,13 @@
 //
 // Prints a table (metric, colza, YADE, difference and its kind, tolerance, PASS/FAIL, the
 // tolerances file's key; report.hpp) and both codes' speed, and keeps them in the work dir as
-// verdict-<command>-<size>.txt and .csv. Exit code: 0 all passed, 1 something failed (a run that fails is a FAIL row), 2 bad
-// usage (--loads with two loads the same to the pascal, a --colza that is not executable), a
-// tolerances file that cannot be read, has a key of a wrong name, type or range, or names a
-// config or scene that is not in the source tree (tolerances.hpp), or a --workdir that cannot
-// be made or written; 77 YADE is not installed
-// (CTest SKIP_RETURN_CODE).
+// verdict-<command>-<size>.txt and .csv. Exit code: 0 all passed, 1 something failed (a run
+// that fails is a FAIL row), 2 bad usage (--loads with two loads the same to the pascal or in
+// kPa, --loads or --size full with a command that has no use for them, a --colza that is not
+// there or not executable, a --yade that is not there), a tolerances file that cannot be
+// read, has a key of a wrong name, type or range, or names a config or scene that is not in
+// the source tree (tolerances.hpp), or a --workdir that cannot be made or written; 77 YADE is
+// not installed and no --yade was given (CTest SKIP_RETURN_CODE).
 //
 // This file reads the command line and runs the checks; the comparisons are in
 // micro_check.cpp, oedometer_check.cpp and shear_check.cpp (checks.hpp), the runs of both
@@ -100,6 +101,7 @@ int main(int argc, char** argv) {
 #ifdef COLZA_EXECUTABLE
   opt.colza = COLZA_EXECUTABLE;
 #endif
+  bool colza_given = false, yade_given = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -108,8 +110,8 @@ int main(int argc, char** argv) {
     };
     try {
       if (a == "--size") opt.size = value();
-      else if (a == "--colza") opt.colza = value();
-      else if (a == "--yade") opt.yade = value();
+      else if (a == "--colza") opt.colza = value(), colza_given = true;
+      else if (a == "--yade") opt.yade = value(), yade_given = true;
       else if (a == "--workdir") opt.workdir = value();
       else if (a == "--source") opt.source = value();
       else if (a == "--tolerances") opt.tolerances = value();
@@ -142,9 +144,19 @@ int main(int argc, char** argv) {
   if (opt.what != "micro" && opt.what != "oedometer" && opt.what != "shear" && opt.what != "all")
     return usage("command must be micro, oedometer, shear or all");
   if (opt.size != "small" && opt.size != "full") return usage("--size must be small or full");
+  // Options the command has no use for are refused rather than ignored.
+  if (opt.what == "micro" && opt.size != "small")
+    return usage("micro has one size (its scenes); --size full applies to oedometer, shear and all");
+  if (!opt.loads.empty() && opt.what != "shear" && opt.what != "all")
+    return usage(("--loads applies to shear and all (the shear box's loads), not to " + opt.what).c_str());
   if (opt.source.empty() || !fs::exists(opt.source / "yade-scripts" / "run_scene.py"))
     return usage("cannot find the colza source tree (yade-scripts/); give --source");
-  if (opt.colza.empty() || !fs::exists(opt.colza)) return usage("cannot find the colza executable; give --colza");
+  if (colza_given && !fs::exists(opt.colza)) return usage(("--colza " + opt.colza.string() + ": no such file").c_str());
+  if (opt.colza.empty() || !fs::exists(opt.colza))
+    return usage(("cannot find the colza executable" +
+                  (opt.colza.empty() ? std::string() : " this crosscheck was built with (" + opt.colza.string() + ")") +
+                  "; give --colza")
+                     .c_str());
   if (!fs::is_regular_file(opt.colza) || access(opt.colza.c_str(), X_OK) != 0)
     return usage(("--colza " + opt.colza.string() + ": not an executable file").c_str());
   if (opt.tolerances.empty()) opt.tolerances = opt.source / "data" / "crosscheck-tolerances.toml";
@@ -162,13 +174,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "crosscheck: error: %s\n", e.what());
     return kExitUsage;
   }
-  // A YADE the user named (a path, or another command than the default) that is not there
-  // is a mistake, not a machine without YADE.
+  // A YADE the user named with --yade (a path or a command, the default's name included) that
+  // is not there is a mistake, not a machine without YADE.
   if (opt.yade.find('/') != std::string::npos && !fs::exists(opt.yade))
     return usage(("--yade " + opt.yade + ": no such file").c_str());
   if (!yade_available(opt.yade)) {
-    if (opt.yade != kDefaultYade)
-      return usage(("--yade " + opt.yade + ": no such command on PATH").c_str());
+    if (yade_given) return usage(("--yade " + opt.yade + ": no such command on PATH").c_str());
     std::printf("crosscheck: SKIPPED: YADE is not installed ('%s' is not on PATH); install the Debian package yade\n",
                 opt.yade.c_str());
     return kExitSkip;
