@@ -73,21 +73,41 @@ bool CodeRuns::reused(const fs::path& out, const std::string& stamp, Reuse reuse
   return true;
 }
 
+bool CodeRuns::failed(const std::string& code, const fs::path& out, const std::string& why,
+                      const std::string& detail) const {
+  std::fprintf(stderr, "crosscheck: %s: %s\n%s", code.c_str(), why.c_str(), detail.c_str());
+  const std::lock_guard<std::mutex> lock(failures_mutex_);
+  failures_[out] = why;
+  return false;
+}
+
+void CodeRuns::forget_failure(const fs::path& out) const {
+  const std::lock_guard<std::mutex> lock(failures_mutex_);
+  failures_.erase(out);
+}
+
+std::string CodeRuns::failure(const fs::path& out) const {
+  const std::lock_guard<std::mutex> lock(failures_mutex_);
+  const auto it = failures_.find(out);
+  return it == failures_.end() ? "" : it->second;
+}
+
+std::string CodeRuns::failure(const fs::path& colza_out, const fs::path& yade_out) const {
+  if (const std::string why = failure(colza_out); !why.empty()) return "colza: " + why;
+  if (const std::string why = failure(yade_out); !why.empty()) return "YADE: " + why;
+  return "run failed";
+}
+
 bool CodeRuns::run(const std::string& code, const std::function<std::string(const fs::path&)>& command_for,
                    const fs::path& out, const std::string& stamp) const {
   std::error_code ec;
   fs::create_directories(out.parent_path(), ec);
-  if (ec) {
-    std::fprintf(stderr, "crosscheck: %s: cannot make the folder %s: %s\n", code.c_str(),
-                 out.parent_path().string().c_str(), ec.message().c_str());
-    return false;
-  }
+  if (ec) return failed(code, out, "cannot make the folder " + out.parent_path().string() + ": " + ec.message());
   const fs::path log = out.string() + ".log", failed_log = out.string() + ".failed.log";
-  if (!removable_run_folder(out, log)) {
-    std::fprintf(stderr, "crosscheck: %s: %s holds files crosscheck did not write; not running there\n", code.c_str(),
-                 out.string().c_str());
-    return false;
-  }
+  if (!removable_run_folder(out, log))
+    return failed(code, out,
+                  out.string() + " holds files crosscheck did not write; not running there (move them, or give "
+                                 "another --workdir)");
   // The run writes into a staging folder beside `out`, and replaces `out` (its stamp and log)
   // only when it has succeeded: a run that fails or is stopped never costs a finished one (a
   // full-size YADE load takes hours), and an earlier result cannot pass for this run's, since
@@ -96,11 +116,7 @@ bool CodeRuns::run(const std::string& code, const std::function<std::string(cons
   const fs::path staging = out.string() + ".running", staging_log = staging.string() + ".log";
   fs::remove_all(staging, ec);
   if (!ec) fs::remove(staging_log, ec);
-  if (ec) {
-    std::fprintf(stderr, "crosscheck: %s: cannot clear %s for the run: %s\n", code.c_str(), staging.string().c_str(),
-                 ec.message().c_str());
-    return false;
-  }
+  if (ec) return failed(code, out, "cannot clear " + staging.string() + " for the run: " + ec.message());
   const std::string command = command_for(staging);
   const int status = run_shell_command(command, staging_log);
   if (stop_requested()) {  // stopped by crosscheck's stop signal: no failure to report
@@ -112,37 +128,33 @@ bool CodeRuns::run(const std::string& code, const std::function<std::string(cons
     fs::rename(staging_log, failed_log, ec);
     const fs::path& whole_log = ec ? staging_log : failed_log;
     const std::string kept = fs::exists(out) ? "; the earlier result in " + out.string() + " is kept" : "";
-    std::fprintf(stderr, "crosscheck: %s failed (exit %d): %s\n%s    (the whole log: %s%s)\n", code.c_str(), status,
-                 command.c_str(), tail_of(whole_log).c_str(), whole_log.string().c_str(), kept.c_str());
+    const std::string detail = "    " + command + "\n" + tail_of(whole_log) + "    (the whole log: " +
+                               whole_log.string() + kept + ")\n";
     fs::remove_all(staging, ec);
-    return false;
+    return failed(code, out, "failed (exit " + std::to_string(status) + "; log " + whole_log.string() + ")", detail);
   }
   fs::remove(stamp_file(out), ec);
   if (!ec) fs::remove_all(out, ec);
   if (!ec) fs::rename(staging, out, ec);
   if (!ec) fs::rename(staging_log, log, ec);
-  if (ec) {
-    std::fprintf(stderr, "crosscheck: %s: cannot move the run from %s to %s: %s\n", code.c_str(),
-                 staging.string().c_str(), out.string().c_str(), ec.message().c_str());
-    return false;
-  }
+  if (ec)
+    return failed(code, out, "cannot move the run from " + staging.string() + " to " + out.string() + ": " + ec.message());
   fs::remove(failed_log, ec);
   try {
     write_stamp(out, stamp);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "crosscheck: %s: %s\n", code.c_str(), e.what());
-    return false;
+    return failed(code, out, e.what());
   }
   return true;
 }
 
-std::optional<std::string> CodeRuns::stamp_of(const std::string& code, const std::string& command,
+std::optional<std::string> CodeRuns::stamp_of(const std::string& code, const fs::path& out, const std::string& command,
                                               const std::vector<fs::path>& programs, const fs::path& config,
                                               const std::vector<std::string>& arguments) const {
   try {
     return run_stamp(command, programs, config, arguments);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "crosscheck: %s: %s\n", code.c_str(), e.what());
+    failed(code, out, e.what());
     return std::nullopt;
   }
 }
@@ -159,7 +171,8 @@ bool CodeRuns::run_colza(const std::string& scenario, const fs::path& config, co
   };
   std::vector<std::string> arguments = sets;
   arguments.insert(arguments.end(), extra.begin(), extra.end());
-  const std::optional<std::string> stamp = stamp_of("colza", command_for(out), {opt_.colza}, config, arguments);
+  forget_failure(out);
+  const std::optional<std::string> stamp = stamp_of("colza", out, command_for(out), {opt_.colza}, config, arguments);
   if (!stamp) return false;
   if (reused(out, *stamp, reuse)) return true;
   return run("colza", command_for, out, *stamp);
@@ -184,7 +197,8 @@ bool CodeRuns::run_yade(const std::string& script, const fs::path& config, const
     if (f.extension() == ".py" && f.filename().string().rfind("run_", 0) != 0) programs.push_back(f);
   }
   std::sort(programs.begin() + 1, programs.end());
-  const std::optional<std::string> stamp = stamp_of("yade", command_for(out), programs, config, extra);
+  forget_failure(out);
+  const std::optional<std::string> stamp = stamp_of("yade", out, command_for(out), programs, config, extra);
   if (!stamp) return false;
   if (reused(out, *stamp, Reuse::kIfAsked)) return true;
   return run("yade", command_for, out, *stamp);

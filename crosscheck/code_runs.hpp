@@ -3,6 +3,8 @@
 #pragma once
 #include <filesystem>
 #include <functional>
+#include <map>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <toml++/toml.h>
@@ -44,6 +46,12 @@ class CodeRuns {
   // yade -n -j 1 -x yade-scripts/<script> <config> <out> [extra]...; as run_colza.
   bool run_yade(const std::string& script, const fs::path& config, const fs::path& out,
                 const std::vector<std::string>& extra = {}) const;
+  // Why the last run into `out` failed, in a few words for the table ("exit 2, log ..."); ""
+  // if it did not fail (or was stopped by a signal).
+  std::string failure(const fs::path& out) const;
+  // The FAIL row's text for a pair of runs, the first that failed: "colza: <why>" or
+  // "YADE: <why>" ("run failed" when neither says why).
+  std::string failure(const fs::path& colza_out, const fs::path& yade_out) const;
 
  private:
   // Whether the finished run in `out` (summary.json present) stands, as `reuse` says; prints
@@ -55,11 +63,18 @@ class CodeRuns {
   bool run(const std::string& code, const std::function<std::string(const fs::path&)>& command_for,
            const fs::path& out, const std::string& stamp) const;
   // The stamp of a run, or nothing (and the reason on stderr) if its inputs cannot be read.
-  std::optional<std::string> stamp_of(const std::string& code, const std::string& command,
+  std::optional<std::string> stamp_of(const std::string& code, const fs::path& out, const std::string& command,
                                       const std::vector<fs::path>& programs, const fs::path& config,
                                       const std::vector<std::string>& arguments) const;
 
+  // Prints "crosscheck: <code>: <why>" (and `detail`, a log's tail) on stderr, records `why`
+  // for failure(out); returns false.
+  bool failed(const std::string& code, const fs::path& out, const std::string& why, const std::string& detail = "") const;
+  void forget_failure(const fs::path& out) const;
+
   const Options& opt_;
+  mutable std::mutex failures_mutex_;  // runs of an ensemble fail in parallel
+  mutable std::map<fs::path, std::string> failures_;
 };
 
 // How many runs run_in_parallel keeps going at once: the 2 cores of the CI machine (each run

@@ -38,7 +38,7 @@
 // Prints a table (metric, colza, YADE, difference and its kind, tolerance, PASS/FAIL, the
 // tolerances file's key; report.hpp) and both codes' speed, and keeps them in the work dir as
 // verdict-<command>-<size>.txt and .csv. Exit code: 0 all passed, 1 something failed (a run
-// that fails is a FAIL row), 2 bad usage (--loads with two loads the same to the pascal or in
+// that fails is a FAIL row saying why), 2 bad usage (--loads with two loads the same to the pascal or in
 // kPa, --loads or --size full with a command that has no use for them, a --colza that is not
 // there or not executable, a --yade that is not there), a tolerances file that cannot be
 // read, has a key of a wrong name, type or range, or names a config or scene that is not in

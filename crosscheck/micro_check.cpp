@@ -101,7 +101,7 @@ void check_micro(const CheckContext& ctx, Report& report) {
     const fs::path config = scenes / (name + ".toml");
     const fs::path c_out = ctx.opt.workdir / "colza" / name, y_out = ctx.opt.workdir / "yade" / name;
     if (!ctx.runs.run_colza("scene", config, c_out) || !ctx.runs.run_yade("run_scene.py", config, y_out)) {
-      report.fail(name, "run failed");
+      report.fail(name, ctx.runs.failure(c_out, y_out));
       continue;
     }
     try {

@@ -177,7 +177,7 @@ void check_oedometer(const CheckContext& ctx, Report& report, const std::string&
                 settle.string().c_str());
     std::fflush(stdout);
     if (!ctx.runs.run_colza("oedometer", settle, settled, {}, {}, Reuse::kIfSameInputs)) {
-      report.fail("oedometer full", "colza could not make the packing");
+      report.fail("oedometer full", "colza could not make the packing: " + ctx.runs.failure(settled));
       return;
     }
     std::string s;
@@ -201,7 +201,7 @@ void check_oedometer(const CheckContext& ctx, Report& report, const std::string&
   std::printf("crosscheck: oedometer %s: running colza and YADE...\n", size.c_str());
   std::fflush(stdout);
   if (!ctx.runs.run_colza("oedometer", config, c_out) || !ctx.runs.run_yade("run_oedometer.py", config, y_out)) {
-    report.fail("oedometer " + size, "run failed");
+    report.fail("oedometer " + size, ctx.runs.failure(c_out, y_out));
     return;
   }
   ctx.speed.add(c_out, y_out, "oedometer " + size);

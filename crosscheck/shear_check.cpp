@@ -78,7 +78,7 @@ std::optional<fs::path> shear_sample(const CheckContext& ctx, const ShearSetting
                           {"shear_box.consolidation_max_time=1e-9", "shear_box.strength_window_start=0",
                            "shear_box.strength_window_end=1e-9", "shear_box.shear_displacement=1e-9"},
                           normal_stress_argument(sample_load), Reuse::kIfSameInputs)) {
-    report.fail(s.label, "colza could not make the sample");
+    report.fail(s.label, "colza could not make the sample: " + ctx.runs.failure(prep));
     return std::nullopt;
   }
   return fs::absolute(prep / "packing.txt");
@@ -106,7 +106,7 @@ void compare_deterministic_start(const CheckContext& ctx, const ShearSetting& s,
   std::printf("crosscheck: %s: deterministic start (%g steps)...\n", s.label.c_str(), early_steps);
   std::fflush(stdout);
   if (!ctx.runs.run_colza("shear", econfig, c_out, {}, sigma) || !ctx.runs.run_yade("run_shear.py", econfig, y_out, sigma)) {
-    report.fail(s.label + " deterministic start", "run failed");
+    report.fail(s.label + " deterministic start", ctx.runs.failure(c_out, y_out));
     return;
   }
   try {
@@ -142,7 +142,7 @@ std::optional<std::pair<double, double>> compare_load(const CheckContext& ctx, c
   std::printf("crosscheck: %s: running colza and YADE...\n", l.c_str());
   std::fflush(stdout);
   if (!ctx.runs.run_colza("shear", config, c_out, {}, arg) || !ctx.runs.run_yade("run_shear.py", config, y_out, arg)) {
-    report.fail(l, "run failed");
+    report.fail(l, ctx.runs.failure(c_out, y_out));
     return std::nullopt;
   }
   ctx.speed.add(c_out, y_out, s.label);

@@ -169,6 +169,9 @@ TEST(CrosscheckRunStamp, ReuseTakesOnlyARunOfTheSameInputs) {
   EXPECT_FALSE(fs::exists(out.string() + ".running"));
   EXPECT_FALSE(runs.run_colza("oedometer", config, out));  // not reused: other inputs
   EXPECT_EQ(calls(dir), 6);
+  // The table's FAIL row says why (it said "run failed", the reason only on stderr).
+  EXPECT_EQ(runs.failure(out), "failed (exit 1; log " + out.string() + ".failed.log)");
+  EXPECT_EQ(runs.failure(out, dir / "work" / "yade"), "colza: " + runs.failure(out));
   fs::remove(dir / "fail.flag");
 
   // A finished run without a stamp (a load run by hand into the work dir) stands under
@@ -176,6 +179,15 @@ TEST(CrosscheckRunStamp, ReuseTakesOnlyARunOfTheSameInputs) {
   // which it does not vouch for.
   ASSERT_TRUE(runs.run_colza("oedometer", config, out));
   EXPECT_FALSE(fs::exists(out.string() + ".failed.log"));  // a success clears the failure's log
+  EXPECT_EQ(runs.failure(out), "");                          // and its reason
+
+  // A folder of the user's where a run goes is not run into, and the row says so.
+  const fs::path mine = dir / "work" / "mine";
+  fs::create_directories(mine);
+  std::ofstream(mine / "notes.txt") << "mine\n";
+  EXPECT_FALSE(runs.run_colza("oedometer", config, mine));
+  EXPECT_NE(runs.failure(mine).find("holds files crosscheck did not write"), std::string::npos) << runs.failure(mine);
+  EXPECT_EQ(read_text(mine / "notes.txt"), "mine\n");
   fs::remove(stamp_file(out));
   EXPECT_TRUE(runs.run_colza("oedometer", config, out));
   EXPECT_EQ(calls(dir), 7);
