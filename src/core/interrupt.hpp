@@ -3,7 +3,8 @@
 // Interrupted, so the run unwinds through its destructors: staging folders are removed
 // (io/output_dir.hpp), earlier results stay as they were, and main() exits with 128 + the
 // signal number (130 for Ctrl-C). A second signal while the first is being handled stops
-// the process at once, as without the handler.
+// the process at once, as without the handler, unless it comes within 0.25 s of the first:
+// that is the same request delivered twice (timeout(1) signals the child and its group).
 #pragma once
 #include <stdexcept>
 

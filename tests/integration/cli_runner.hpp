@@ -74,9 +74,10 @@ inline CliResult run_colza(const std::string& args) {
 // at most `timeout`; `ready_reached` says whether it did), sends it SIGINT (Ctrl-C) and waits
 // for it: its exit code (130 when the signal stopped it) and stderr; -1 if it ended on a
 // signal instead of exiting, or did not stop within a minute (then it is killed). If colza
-// ends before `ready()`, no signal is sent and its own exit code is returned.
+// ends before `ready()`, no signal is sent and its own exit code is returned. `signals`
+// SIGINTs are sent back to back (2: as timeout(1) delivers one, to the child and its group).
 inline CliResult run_colza_interrupted(const std::string& args, const std::function<bool()>& ready,
-                                       std::chrono::seconds timeout = std::chrono::seconds(120)) {
+                                       std::chrono::seconds timeout = std::chrono::seconds(120), int signals = 1) {
   const auto err = stderr_file();
   const std::string cmd = "exec " + colza_command(args, err);
   CliResult r;
@@ -98,7 +99,7 @@ inline CliResult run_colza_interrupted(const std::string& args, const std::funct
   }
   if (!ended) {
     // Ctrl-C stops colza within a step; after a minute it is hung: kill it (exit_code -1).
-    ::kill(child, SIGINT);
+    for (int k = 0; k < signals; ++k) ::kill(child, SIGINT);
     const auto kill_at = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     while (::waitpid(child, &status, WNOHANG) != child) {
       if (std::chrono::steady_clock::now() > kill_at) {

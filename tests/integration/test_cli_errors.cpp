@@ -244,6 +244,21 @@ TEST(CliErrors, InterruptedRunRemovesItsPartialOutputsAndKeepsTheEarlierResult) 
   EXPECT_EQ(entries, 1u);  // no staging folder left behind
 }
 
+TEST(CliErrors, OneInterruptDeliveredTwiceStillCleansUp) {
+  // timeout(1) sends SIGINT to colza and then to its own process group, colza included: two
+  // signals microseconds apart are one request, so colza still stops between two steps and
+  // removes its staging folder (it stopped at once and left it: a walk-through, 2 runs in 6).
+  const fs::path out = scratch_dir("interrupted-twice");
+  fs::create_directories(out);
+  const CliResult r = run_colza_interrupted(
+      "run oedometer --quiet --config " + source_path("data/oedometer.toml") + " --out " + out.string(),
+      [&] { return has_entry_containing(out, ".colza-partial-"); }, std::chrono::seconds(120), 2);
+  EXPECT_TRUE(r.ready_reached);
+  EXPECT_EQ(r.exit_code, 130);
+  EXPECT_NE(r.stderr_text.find("interrupted by SIGINT"), std::string::npos) << r.stderr_text;
+  EXPECT_TRUE(fs::is_empty(out));  // no staging folder left behind
+}
+
 TEST(CliErrors, StagingLeftByAKilledRunIsRemovedByTheNextRun) {
   // A run killed outright (SIGKILL, a crash) cannot clean up; the next run into the same
   // directory removes the staging folders of this machine's processes that have ended (a
