@@ -7,6 +7,7 @@
 #include <numeric>
 #include <sstream>
 
+#include "config/sample_depth.hpp"
 #include "contact/slot_registry.hpp"
 #include "io/format_number.hpp"
 #include "io/load_label.hpp"
@@ -69,8 +70,9 @@ IntegrationSpec read_integration(const ConfigNode& t) {
   return s;
 }
 
-SampleSpec read_sample(const ConfigNode& t) {
+SampleSpec read_sample(const ConfigNode& t, Scenario scenario) {
   SampleSpec s;
+  if (scenario == Scenario::kShear) s.count = SampleSpec::kShearBoxCount;
   s.count = t.integer("count", s.count, 1);
   s.settle_unbalanced_force = t.positive("settle_unbalanced_force", s.settle_unbalanced_force);
   s.settle_max_time = t.positive("settle_max_time", s.settle_max_time);
@@ -133,6 +135,11 @@ ShearBoxSpec read_shear_box(const ConfigNode& t, const ParticleSpec& particle) {
     t.fail("shear_plane", m(b.shear_plane) + " must lie below shear_box.height, " + m(b.height));
   if (b.generation_height < b.height)
     t.fail("generation_height", m(b.generation_height) + " must be at least shear_box.height, " + m(b.height));
+  // The halves part by the shear displacement: past the box's length nothing of the sample is
+  // sheared any more (a walk-through's 30, mm for m, would have run ~1e8 steps, hours).
+  if (b.shear_displacement >= b.length)
+    t.fail("shear_displacement", m(b.shear_displacement) + " must be below shear_box.length, " + m(b.length) +
+                                     " (lengths are in metres)");
   if (b.strength_window_start >= b.strength_window_end)
     t.fail("strength_window_start", m(b.strength_window_start) + " must be below shear_box.strength_window_end, " +
                                         m(b.strength_window_end));
@@ -159,8 +166,7 @@ ShearBoxSpec read_shear_box(const ConfigNode& t, const ParticleSpec& particle) {
 // (shear box, 1e-3 N) of the weight of its 6-7 mm seeds.
 void require_a_criterion_below_the_weight(const RunConfig& c, const ConfigNode& sample) {
   const double dmin = c.particle.diameter_min, dmax = c.particle.diameter_max;
-  const double mean_cube = dmax > dmin ? (std::pow(dmax, 4) - std::pow(dmin, 4)) / (4.0 * (dmax - dmin)) : dmin * dmin * dmin;
-  const double weight = c.particle.density * (M_PI / 6.0) * mean_cube * c.integration.gravity.norm();
+  const double weight = c.particle.density * mean_sphere_volume(c.particle) * c.integration.gravity.norm();
   const double criterion = c.sample.settle_unbalanced_force;
   if (criterion < weight) return;
   sample.fail("settle_unbalanced_force",
@@ -322,7 +328,7 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
     contact.fail("bond_gap", why.str());
   }
   if (scenario == Scenario::kOedometer) {
-    c.sample = read_sample(root.table("sample"));
+    c.sample = read_sample(root.table("sample"), scenario);
     c.oedometer = read_oedometer(root.table("oedometer"), c.particle);
     if (!c.oedometer.packing_file.empty())
       c.oedometer.packing_file = checked_packing_file(
@@ -331,7 +337,7 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
             check_packing_in_cylinder(spheres, 0.5 * c.oedometer.cylinder_diameter, path, key);
           });
   } else if (scenario == Scenario::kShear) {
-    c.sample = read_sample(root.table("sample"));
+    c.sample = read_sample(root.table("sample"), scenario);
     c.shear_box = read_shear_box(root.table("shear_box"), c.particle);
     if (!c.shear_box.packing_file.empty())
       c.shear_box.packing_file = checked_packing_file(
@@ -347,7 +353,10 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
   reader.reject_unknown_keys();
   const bool settles = (scenario == Scenario::kOedometer && c.oedometer.packing_file.empty()) ||
                        (scenario == Scenario::kShear && c.shear_box.packing_file.empty());
-  if (settles) require_a_criterion_below_the_weight(c, root.table("sample"));
+  if (settles) {
+    require_a_criterion_below_the_weight(c, root.table("sample"));
+    require_a_sample_deep_enough(c, scenario, root);
+  }
   c.resolved_toml = reader.resolved_text();
   return c;
 }

@@ -37,7 +37,10 @@ struct IntegrationSpec {              // [integration]
 };
 
 struct SampleSpec {                   // [sample]
-  std::int64_t count = 2600;          // spheres generated before settling
+  std::int64_t count = 2600;          // spheres generated before settling (the oedometer's)
+  // The shear box's default count, data/shear.toml's for the paper's 200 x 200 mm box (2600
+  // would settle not a layer above its shear plane: config/sample_depth.hpp).
+  static constexpr std::int64_t kShearBoxCount = 12800;
   double settle_unbalanced_force = 1e-4;  // N, mean over particles (paper: 1e-4 oedometer)
   double settle_max_time = 5.0;       // s of simulated time before settling gives up
   std::int64_t settle_check_interval = 200;  // steps between checks

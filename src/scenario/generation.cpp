@@ -37,10 +37,18 @@ std::vector<PackedSphere> generate_spheres(const GenerationRequest& req) {
   boost::random::mt19937_64 engine(req.seed);
   boost::random::uniform_real_distribution<double> unit(0.0, 1.0);
   const Vec3 lo = req.region.lo, span = req.region.hi - req.region.lo;
-  // Hash grid of placed spheres, cell = d_max, so overlaps are found in the 27 neighbouring cells.
-  const double cell = std::max(req.diameter_max, 1e-12);
+  // Hash grid of placed spheres, cell >= d_max, so overlaps are found in the 27 neighbouring
+  // cells. Cells of d_max, unless that makes more than kCellsPerSphere per sphere asked for
+  // (a region in mm typed for m made a grid of 14286 x 14286 x 29 cells: std::bad_alloc):
+  // then larger cells, which find the same overlaps, so the same packing. The paper's
+  // cylinder has 2.5 cells per sphere, its shear box 1.9.
+  constexpr double kCellsPerSphere = 8.0, kCellsAtLeast = 4096.0;
+  const double most_cells = std::max(kCellsAtLeast, kCellsPerSphere * static_cast<double>(req.count));
+  double cell = std::max(req.diameter_max, 1e-12);
+  const auto cells_along = [&](int d) { return std::max(1.0, std::ceil(span[d] / cell)); };
+  while (cells_along(0) * cells_along(1) * cells_along(2) > most_cells) cell *= 1.25;
   int dims[3];
-  for (int d = 0; d < 3; ++d) dims[d] = std::max(1, static_cast<int>(std::ceil(span[d] / cell)));
+  for (int d = 0; d < 3; ++d) dims[d] = static_cast<int>(cells_along(d));
   std::vector<std::vector<std::uint32_t>> grid(static_cast<std::size_t>(dims[0]) * dims[1] * dims[2]);
   auto coord = [&](const Vec3& x, int d) { return std::clamp(static_cast<int>((x[d] - lo[d]) / cell), 0, dims[d] - 1); };
 

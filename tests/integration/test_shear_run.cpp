@@ -177,7 +177,7 @@ TEST_F(SmallShearSeries, ForceReplacesTheEarlierSeriesOnlyOnceTheNewOneIsComplet
   const fs::path earlier = scratch_dir("small-shear-replaced");
   fs::copy(out_, earlier, fs::copy_options::recursive);
   const auto before = directory_contents(earlier);
-  // Stopped during its first load (100 mm of shear from the earlier sample takes many
+  // Stopped during its first load (50 mm of shear from the earlier sample takes many
   // seconds), once the new sample.json is staged: the earlier series is left exactly as it
   // was, sample included.
   const std::string from_packing = " --set shear_box.packing_file=" + (out_ / "packing.txt").string();
@@ -187,7 +187,7 @@ TEST_F(SmallShearSeries, ForceReplacesTheEarlierSeriesOnlyOnceTheNewOneIsComplet
     });
   };
   CliResult r = run_colza_interrupted("run shear-series --quiet --force --config " + kConfig + from_packing +
-                                          " --set shear_box.shear_displacement=0.1 --out " + earlier.string(),
+                                          " --set shear_box.shear_displacement=0.05 --out " + earlier.string(),
                                       new_sample_staged);
   EXPECT_TRUE(r.ready_reached);
   EXPECT_EQ(r.exit_code, 130) << r.stderr_text;

@@ -76,7 +76,9 @@ TEST(ConfigValidation, ASettlingCriterionAboveTheSphereWeightIsRefused) {
   EXPECT_EQ(shear.key(), "sample.settle_unbalanced_force");
   EXPECT_NE(shear.reason().find("0.000798 N"), std::string::npos) << shear.reason();
   EXPECT_NO_THROW(read_run_config(
-      Scenario::kShear, ConfigReader::from_string("[particle]\ndensity = 1230.0\n[sample]\nsettle_unbalanced_force = 1e-3\n", "s.toml")));
+      Scenario::kShear,
+      ConfigReader::from_string("[particle]\ndensity = 1230.0\n[sample]\nsettle_unbalanced_force = 1e-3\ncount = 12800\n",
+                                "s.toml")));
   // A run from a packing file does not settle: SmallOedometer.ASettlingCriterionIsNotJudgedWithoutSettling.
 }
 
@@ -419,4 +421,44 @@ TEST(ConfigValidation, WallFrictionRule) {
       read_run_config(Scenario::kOedometer, ConfigReader::from_string("[contact]\nwall_friction = \"min\"\n", "b.toml"));
   EXPECT_EQ(c.wall_friction, WallFrictionRule::kMinimum);
   EXPECT_EQ(make_physics(c).wall_friction, WallFrictionRule::kMinimum);
+}
+
+namespace {
+ConfigError shear_error(const std::vector<std::string>& sets) {
+  return expect_config_error([&] { load_run_config(Scenario::kShear, "", sets); });
+}
+}  // namespace
+
+// A generated sample too shallow for its test is refused before the run, naming what is most
+// likely wrong (a walk-through's runs: a 100-sphere shear box whose plate came to rest below
+// the shear plane, a box of 60 m, cylinders of 1 and 100 m). The bound: count x mean sphere
+// volume / (0.45 x floor area); the paper's defaults and the small test configs pass.
+TEST(ConfigValidation, ASampleTooShallowForItsTestIsRefused) {
+  EXPECT_NO_THROW(load_run_config(Scenario::kOedometer, "", {}));
+  // The shear box's built-in count is data/shear.toml's 12800 (the oedometer's 2600 would
+  // settle at most 20.9 mm deep, below its shear plane).
+  EXPECT_EQ(load_run_config(Scenario::kShear, "", {}).sample.count, 12800);
+  EXPECT_NO_THROW(load_run_config(Scenario::kShear, "", {"sample.count=2600", "shear_box.shear_plane=0.01"}));
+  // 20 spheres of 6-7 mm (mean volume pi/6 x 276.25 mm^3 = 144.6 mm^3) in the 100 mm cylinder:
+  // 20 x 144.6 / (0.45 x 7854) = 0.819 mm, below three layers (21 mm).
+  ConfigError e = expect_config_error([] { load_run_config(Scenario::kOedometer, "", {"sample.count=20"}); });
+  EXPECT_EQ(e.key(), "sample.count");
+  EXPECT_NE(e.reason().find("settle at most 0.819 mm deep"), std::string::npos) << e.reason();
+  // A cylinder of 100 m: its diameter is named, with the unit.
+  e = expect_config_error([] { load_run_config(Scenario::kOedometer, "", {"oedometer.cylinder_diameter=100"}); });
+  EXPECT_EQ(e.key(), "oedometer.cylinder_diameter");
+  EXPECT_NE(e.reason().find("lengths are in metres"), std::string::npos) << e.reason();
+  // The shear box (200 x 200 mm, shear plane at 40 mm): 1000 spheres stand at most 8.03 mm.
+  e = shear_error({"sample.count=1000"});
+  EXPECT_EQ(e.key(), "sample.count");
+  EXPECT_NE(e.reason().find("not a layer above the shear plane at 40 mm"), std::string::npos) << e.reason();
+  EXPECT_EQ(shear_error({"shear_box.width=200"}).key(), "shear_box.width");
+  // A packing file is checked as read, not by this bound.
+}
+
+TEST(ConfigValidation, AShearDisplacementPastTheBoxIsRefused) {
+  // 30 (mm typed for m) would have sheared for ~1e8 steps.
+  const ConfigError e = shear_error({"shear_box.shear_displacement=30"});
+  EXPECT_EQ(e.key(), "shear_box.shear_displacement");
+  EXPECT_NE(e.reason().find("must be below shear_box.length, 0.2 m"), std::string::npos) << e.reason();
 }

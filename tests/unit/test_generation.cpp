@@ -171,3 +171,28 @@ TEST(Generation, AnImpossibleCountIsNotAllocated) {
   EXPECT_GE(s.size(), 1u);
   EXPECT_LE(s.size(), 8u);
 }
+
+TEST(Generation, AHugeRegionGetsLargerCellsAndTheSamePacking) {
+  // A cylinder of 100 m (mm typed for m) asked for a grid of 14286 x 14286 x 29 cells of d_max
+  // (std::bad_alloc). The grid now keeps to 8 cells per sphere asked for (4096 at least) by
+  // taking larger cells, which find the same overlaps: the spheres placed are those of the
+  // d_max grid. Here a 0.5 m cube (72^3 cells of 7 mm): 46656 spheres keep the 7 mm cells,
+  // and their first 20 must be the 20 placed on a grid of 4096 cells.
+  GenerationRequest many;
+  many.region = GenerationRegion::box(Vec3::Zero(), Vec3(0.5, 0.5, 0.5));
+  many.count = 46656;
+  many.diameter_min = 6e-3;
+  many.diameter_max = 7e-3;
+  many.seed = 5;
+  GenerationRequest few = many;
+  few.count = 20;
+  const auto all = generate_spheres(many);
+  ASSERT_EQ(all.size(), many.count);
+  const auto first = generate_spheres(few);
+  ASSERT_EQ(first.size(), few.count);
+  EXPECT_TRUE(bitwise_equal(first, std::vector<PackedSphere>(all.begin(), all.begin() + 20)));
+
+  GenerationRequest huge = few;
+  huge.region = GenerationRegion::vertical_cylinder(Vec3::Zero(), 50.0, 0.2);
+  EXPECT_EQ(generate_spheres(huge).size(), few.count);
+}
