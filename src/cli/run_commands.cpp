@@ -27,7 +27,17 @@ namespace {
 // summary.json's "warnings".
 std::vector<std::string> oedometer_warnings(const RunConfig& c, const OedometerResult& r) {
   std::vector<std::string> w = settings_warnings(c, Scenario::kOedometer, /*series=*/false);
-  if (!r.settling.converged) w.push_back(settling_warning(c, r.settling));
+  if (r.settled_here && !r.settling.converged) w.push_back(settling_warning(c, r.settling));
+  // A sample cut at the rim stands within a sphere of it; one that stops short was not cut
+  // level, and its rough top counts in bulk_density (a walk-through's 1000 spheres: 572 kg/m^3
+  // against 660 for the paper's sample, 667 by the mean height of its top).
+  const double rim = c.oedometer.cylinder_height;
+  if (r.packing_height < rim - c.particle.diameter_max)
+    w.push_back("the sample's top, " + format_significant(1e3 * r.packing_height, 4) + " mm, lies more than " +
+                "particle.diameter_max below the rim, oedometer.cylinder_height = " + format_significant(1e3 * rim, 4) +
+                " mm: it was not cut level, so bulk_density (particle mass / (cylinder area x the highest sphere's "
+                "top)) counts its rough top as sample and reads low; " +
+                (r.settled_here ? "generate more spheres (sample.count)" : "load a packing that fills the cylinder"));
   if (!r.fit.reached_force_max)
     w.push_back("the force never reached fit_force_max = " + format_shortest(c.oedometer.fit_force_max) +
                 " N; the fit covers a shorter range");
@@ -42,7 +52,7 @@ void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputSta
   s["particles"] = r.particles;
   s["packing_height"] = r.packing_height;
   s["bulk_density"] = r.bulk_density;
-  s["settling"] = settling_json(c, r.settling);
+  if (r.settled_here) s["settling"] = settling_json(c, r.settling);  // absent for a packing file
   s["bond_install"] = to_string(c.contact.bond_install);
   s["bonds_installed"] = r.bonds_installed;
   s["bonds_broken_tension"] = r.bonds_broken_tension;
@@ -82,8 +92,10 @@ void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputSta
   else
     std::printf("oedometer: %zu particles (of %zu read from %s), bulk density %.1f kg/m^3\n", r.particles,
                 r.particles_generated, c.oedometer.packing_file.c_str(), r.bulk_density);
+  // The fit ends at fit_force_max, or at the largest force when the run stopped below it.
+  const double fit_end = r.fit.reached_force_max ? c.oedometer.fit_force_max : r.max_force;
   std::printf("  max piston force %.1f N (stop: %s); fit F = c0 + c1 s + c2 s^2 over %.0f..%.0f N:", r.max_force,
-              r.stop_reason.c_str(), c.oedometer.fit_force_min, c.oedometer.fit_force_max);
+              r.stop_reason.c_str(), c.oedometer.fit_force_min, fit_end);
   if (r.fit.valid)
     std::printf(" c0 = %.4g N, c1 = %.4g N/m, c2 = %.4g N/m^2, R^2 = %.4f\n", r.fit.fit.coefficients[0],
                 r.fit.fit.coefficients[1], r.fit.fit.coefficients[2], r.fit.fit.r2);
