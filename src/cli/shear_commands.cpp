@@ -61,6 +61,16 @@ std::vector<std::string> load_warnings(const RunConfig& c, const ShearSample& sa
   if (r.particles_outside > 0)
     w.push_back(std::to_string(r.particles_outside) + (r.particles_outside == 1 ? " particle" : " particles") +
                 " ended outside the box");
+  // The shear plane must pass through the sample: a plate that came to rest less than a
+  // sphere above it (a sparse packing file; a generated sample too shallow is refused before
+  // the run, config/sample_depth.hpp) shears (almost) nothing of it.
+  const std::vector<double>& plate = r.curve.column("plate_height");
+  const double plane = c.shear_box.shear_plane;
+  if (!plate.empty() && plate.front() < plane + c.particle.diameter_max)
+    w.push_back("the plate came to rest at " + format_significant(1e3 * plate.front(), 4) +
+                " mm, not particle.diameter_max above the shear plane at " + format_significant(1e3 * plane, 4) +
+                " mm (shear_box.shear_plane): the upper half holds (almost) no sample, and this shear strength is "
+                "not the sample's");
   return w;
 }
 

@@ -127,6 +127,33 @@ TEST_F(SmallShearSeries, SpheresLeavingTheBoxAreAWarning) {
   EXPECT_TRUE(read_json(out_ / "load-25750Pa" / "summary.json")["warnings"].empty());
 }
 
+TEST_F(SmallShearSeries, APlateBelowTheShearPlaneIsAWarning) {
+  // The series' sample cut to its spheres below 12 mm (a sparse packing file; a generated
+  // sample that shallow is refused before the run): the plate comes to rest near 13 mm, under
+  // the 20 mm shear plane, and the shear strength is not the sample's (a walk-through's
+  // 100-sphere box reported -1.075 kPa without a warning).
+  const fs::path out = scratch_dir("small-shear-shallow");
+  fs::create_directories(out);
+  std::ifstream in(out_ / "packing.txt");
+  std::ofstream low(out / "low.txt");
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream fields(line);
+    double x = 0.0, y = 0.0, z = 1.0;
+    if (line.empty() || line[0] == '#' || !(fields >> x >> y >> z) || z < 0.012) low << line << "\n";
+  }
+  low.close();
+  const CliResult r = run_colza("run shear --quiet --normal-stress 25750 --config " + kConfig +
+                                " --set shear_box.packing_file=" + (out / "low.txt").string() +
+                                " --set shear_box.shear_displacement=0.002 --set shear_box.strength_window_start=0.001"
+                                " --set shear_box.strength_window_end=0.002 --out " + (out / "run").string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const auto warnings = read_json(out / "run" / "summary.json")["warnings"];
+  ASSERT_EQ(warnings.size(), 1u) << warnings.dump();
+  const std::string w = warnings[0].get<std::string>();
+  EXPECT_EQ(w.rfind("the plate came to rest at ", 0), 0u) << w;
+  EXPECT_NE(w.find("not particle.diameter_max above the shear plane at 20 mm"), std::string::npos) << w;
+}
+
 TEST_F(SmallShearSeries, ShearForceIsPositiveAndStartsNearZero) {
   std::vector<std::string> header;
   const auto rows = read_rows(out_ / "load-78750Pa" / "curve.csv", header);
