@@ -50,4 +50,11 @@ MohrCoulombFit fit_mohr_coulomb(const std::vector<double>& sigma, const std::vec
   return f;
 }
 
+std::string cohesion_note(const MohrCoulombFit& fit) {
+  if (fit.degrees_of_freedom < 1 || !(std::abs(fit.cohesion) < 2.0 * fit.cohesion_se)) return "";
+  std::string note = "C is within two standard errors of zero: these loads do not tell it from no cohesion";
+  if (fit.cohesion < 0.0) note += " (a negative C is where the line through the loads meets the stress axis, not a strength)";
+  return note;
+}
+
 }  // namespace colza

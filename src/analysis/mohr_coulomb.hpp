@@ -1,6 +1,7 @@
 // Mohr-Coulomb failure line from direct shear results (paper section 3.1):
 // tau = C + sigma tan(Phi), a least-squares line through (sigma, tau) over the loads.
 #pragma once
+#include <string>
 #include <vector>
 
 namespace colza {
@@ -21,5 +22,11 @@ struct MohrCoulombFit {
 
 // Needs at least two distinct normal stresses; throws std::invalid_argument otherwise.
 MohrCoulombFit fit_mohr_coulomb(const std::vector<double>& normal_stress, const std::vector<double>& shear_strength);
+
+// What a user must read beside C, or "": a C within two standard errors of zero (with a
+// degree of freedom or more) is not told from no cohesion by these loads, and a negative one
+// is where the line through the loads meets the stress axis, not a strength (a walk-through's
+// series gave C = -1.151 +/- 5.286 kPa without a word).
+std::string cohesion_note(const MohrCoulombFit& fit);
 
 }  // namespace colza

@@ -325,6 +325,10 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
                   "freedom), R^2 = %.4f\n",
                   mc.cohesion * 1e-3, mc.cohesion_se * 1e-3, mc.friction_angle_deg, mc.friction_angle_se_deg,
                   mc.degrees_of_freedom, mc.r2);
+      if (const std::string note = cohesion_note(mc); !note.empty()) {
+        s["cohesion_note"] = note;
+        std::printf("  NOTE: %s\n", note.c_str());
+      }
     } else {
       std::printf("Mohr-Coulomb: C = %.3f kPa, Phi = %.2f deg (two loads: a line through two points, no standard "
                   "error)\n",

@@ -5,7 +5,9 @@
 
 #include "analysis/mohr_coulomb.hpp"
 
+using colza::cohesion_note;
 using colza::fit_mohr_coulomb;
+using colza::MohrCoulombFit;
 
 TEST(MohrCoulomb, RecoversAKnownLineExactly) {
   // tau = C + sigma tan(Phi) with the paper's measured C = 11.41 kPa, Phi = 28.10 deg,
@@ -67,4 +69,21 @@ TEST(MohrCoulomb, StandardErrorsFromTheScatterAboutTheLine) {
 TEST(MohrCoulomb, RejectsFewerThanTwoDistinctLoads) {
   EXPECT_THROW(fit_mohr_coulomb({1.0}, {2.0}), std::invalid_argument);
   EXPECT_THROW(fit_mohr_coulomb({1.0, 1.0}, {2.0, 3.0}), std::invalid_argument);
+}
+
+TEST(MohrCoulomb, ACohesionWithinTwoStandardErrorsOfZeroIsNoted) {
+  MohrCoulombFit fit;
+  fit.degrees_of_freedom = 2;
+  fit.cohesion = -1151.0;  // a walk-through's series: -1.151 +/- 5.286 kPa
+  fit.cohesion_se = 5286.0;
+  EXPECT_NE(cohesion_note(fit).find("not a strength"), std::string::npos) << cohesion_note(fit);
+  fit.cohesion = 3000.0;
+  EXPECT_EQ(cohesion_note(fit), "C is within two standard errors of zero: these loads do not tell it from no cohesion");
+  fit.cohesion = 12849.76;  // the same machine's paper series: 12.850 +/- 1.258 kPa
+  fit.cohesion_se = 1257.88;
+  EXPECT_EQ(cohesion_note(fit), "");
+  fit.degrees_of_freedom = 0;  // two loads: no standard error to judge by
+  fit.cohesion = -100.0;
+  fit.cohesion_se = std::nan("");
+  EXPECT_EQ(cohesion_note(fit), "");
 }
