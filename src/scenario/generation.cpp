@@ -37,21 +37,6 @@ std::vector<PackedSphere> generate_spheres(const GenerationRequest& req) {
   boost::random::mt19937_64 engine(req.seed);
   boost::random::uniform_real_distribution<double> unit(0.0, 1.0);
   const Vec3 lo = req.region.lo, span = req.region.hi - req.region.lo;
-  // Hash grid of placed spheres, cell >= d_max, so overlaps are found in the 27 neighbouring
-  // cells. Cells of d_max, unless that makes more than kCellsPerSphere per sphere asked for
-  // (a region in mm typed for m made a grid of 14286 x 14286 x 29 cells: std::bad_alloc):
-  // then larger cells, which find the same overlaps, so the same packing. The paper's
-  // cylinder has 2.5 cells per sphere, its shear box 1.9.
-  constexpr double kCellsPerSphere = 8.0, kCellsAtLeast = 4096.0;
-  const double most_cells = std::max(kCellsAtLeast, kCellsPerSphere * static_cast<double>(req.count));
-  double cell = std::max(req.diameter_max, 1e-12);
-  const auto cells_along = [&](int d) { return std::max(1.0, std::ceil(span[d] / cell)); };
-  while (cells_along(0) * cells_along(1) * cells_along(2) > most_cells) cell *= 1.25;
-  int dims[3];
-  for (int d = 0; d < 3; ++d) dims[d] = static_cast<int>(cells_along(d));
-  std::vector<std::vector<std::uint32_t>> grid(static_cast<std::size_t>(dims[0]) * dims[1] * dims[2]);
-  auto coord = [&](const Vec3& x, int d) { return std::clamp(static_cast<int>((x[d] - lo[d]) / cell), 0, dims[d] - 1); };
-
   // No packing of spheres of diameter >= d_min fills more than pi / sqrt(18) (~74 %, Kepler)
   // of the region, so no more than `most` can ever be placed: a larger count is placed up to
   // the first failures and reported by the caller, never allocated (nor more than 2^20 in
@@ -61,6 +46,21 @@ std::vector<PackedSphere> generate_spheres(const GenerationRequest& req) {
                                    : kPi * req.region.radius * req.region.radius * span.z();
   const double smallest_sphere = kPi / 6.0 * std::pow(std::max(req.diameter_min, 1e-12), 3);
   const double most = kPi / std::sqrt(18.0) * region_volume / smallest_sphere + 1.0;
+  // Hash grid of placed spheres, cell >= d_max, so overlaps are found in the 27 neighbouring
+  // cells. Cells of d_max, unless that makes more than kCellsPerSphere per sphere asked for
+  // (or that could fit; a region in mm typed for m made a grid of 14286 x 14286 x 29 cells:
+  // std::bad_alloc): then larger cells, which find the same overlaps, so the same packing. The paper's
+  // cylinder has 2.5 cells per sphere, its shear box 1.9.
+  constexpr double kCellsPerSphere = 8.0, kCellsAtLeast = 4096.0;
+  const double most_cells = std::max(kCellsAtLeast, kCellsPerSphere * std::min(static_cast<double>(req.count), most));
+  double cell = std::max(req.diameter_max, 1e-12);
+  const auto cells_along = [&](int d) { return std::max(1.0, std::ceil(span[d] / cell)); };
+  while (cells_along(0) * cells_along(1) * cells_along(2) > most_cells) cell *= 1.25;
+  int dims[3];
+  for (int d = 0; d < 3; ++d) dims[d] = static_cast<int>(cells_along(d));
+  std::vector<std::vector<std::uint32_t>> grid(static_cast<std::size_t>(dims[0]) * dims[1] * dims[2]);
+  auto coord = [&](const Vec3& x, int d) { return std::clamp(static_cast<int>((x[d] - lo[d]) / cell), 0, dims[d] - 1); };
+
   std::vector<PackedSphere> placed;
   constexpr double kReserveAtMost = 1 << 20;  // beyond it the vector grows as spheres are placed
   placed.reserve(static_cast<std::size_t>(std::min({static_cast<double>(req.count), most, kReserveAtMost})));
