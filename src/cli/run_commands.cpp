@@ -27,7 +27,7 @@ namespace {
 // summary.json's "warnings".
 std::vector<std::string> oedometer_warnings(const RunConfig& c, const OedometerResult& r) {
   std::vector<std::string> w = settings_warnings(c, Scenario::kOedometer, /*series=*/false);
-  if (r.settled_here && !r.settling.converged) w.push_back(settling_warning(c, r.settling));
+  if (r.settling.in_this_run() && !r.settling.converged) w.push_back(settling_warning(c, r.settling));
   // A sample cut at the rim stands within a sphere of it; one that stops short was not cut
   // level, and its rough top counts in bulk_density (a walk-through's 1000 spheres: 572 kg/m^3
   // against 660 for the paper's sample, 667 by the mean height of its top).
@@ -37,7 +37,7 @@ std::vector<std::string> oedometer_warnings(const RunConfig& c, const OedometerR
                 "particle.diameter_max below the rim, oedometer.cylinder_height = " + format_significant(1e3 * rim, 4) +
                 " mm: it was not cut level, so bulk_density (particle mass / (cylinder area x the highest sphere's "
                 "top)) counts its rough top as sample and reads low; " +
-                (r.settled_here ? "generate more spheres (sample.count)" : "load a packing that fills the cylinder"));
+                (r.settling.in_this_run() ? "generate more spheres (sample.count)" : "load a packing that fills the cylinder"));
   if (!r.fit.reached_force_max)
     w.push_back("the force never reached fit_force_max = " + format_shortest(c.oedometer.fit_force_max) +
                 " N; the fit covers a shorter range");
@@ -52,7 +52,7 @@ void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputSta
   s["particles"] = r.particles;
   s["packing_height"] = r.packing_height;
   s["bulk_density"] = r.bulk_density;
-  if (r.settled_here) s["settling"] = settling_json(c, r.settling);  // absent for a packing file
+  if (r.settling.in_this_run()) s["settling"] = settling_json(c, r.settling);  // absent for a packing file
   s["bond_install"] = to_string(c.contact.bond_install);
   s["bonds_installed"] = r.bonds_installed;
   s["bonds_broken_tension"] = r.bonds_broken_tension;

@@ -98,7 +98,7 @@ nlohmann::json load_summary(const RunConfig& c, const ShearSample& sample, const
   s["bonds_broken_shear"] = r.bonds_broken_shear;
   // The sample's settling, when this run settled it (not from a packing file, nor a resumed
   // series' sample); "steps" are the load's own, consolidation and shearing.
-  if (sample.settling.steps > 0) s["settling"] = settling_json(c, sample.settling);
+  if (sample.settling.in_this_run()) s["settling"] = settling_json(c, sample.settling);
   s["dt"] = r.dt;
   s["steps"] = r.steps;
   add_timing(s, r.stages);

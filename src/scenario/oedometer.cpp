@@ -52,7 +52,6 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
         "oedometer.generation_height", o.cylinder_height, "below the rim", progress, prep_clock);
     world.particles = std::move(s.at_rest);
     r.particles_generated = s.generated;
-    r.settled_here = true;
     r.settling = s.settling;
   } else {
     world.particles = sample_from_packing(o.packing_file, "oedometer.packing_file", c.particle.density);

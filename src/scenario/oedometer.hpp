@@ -19,8 +19,7 @@ struct OedometerResult {
   std::size_t particles = 0;          // after discarding above the rim
   double packing_height = 0.0;        // m, top of the highest sphere = piston start height
   double bulk_density = 0.0;          // kg/m^3 = particle mass / (cylinder area x packing height)
-  bool settled_here = false;          // the sample was generated and settled by this run (not a packing file)
-  SettleResult settling;              // when settled_here
+  SettleResult settling;              // none (in_this_run() false) for a packing file
   std::size_t bonds_installed = 0;
   Table curve{{"time", "piston_displacement", "piston_force", "contacts", "bonds"}, {"s", "m", "N", "1", "1"}};
   CompressionFit fit;

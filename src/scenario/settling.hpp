@@ -20,6 +20,9 @@ struct SettleResult {
   double simulated_time = 0.0;         // s
   double mean_unbalanced_force = 0.0;  // N, at the end
   double share_touching_nothing = 0.0;  // of the free particles, at the end
+  // Whether this run settled the sample: one from a packing file (or a resumed series' kept
+  // sample) took no settling step.
+  bool in_this_run() const { return steps > 0; }
 };
 
 // At rest, nearly every sphere of a sample under gravity rests on something: the paper's
