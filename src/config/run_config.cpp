@@ -31,6 +31,22 @@ const char* to_string(BoxEdgeContacts e) {
 
 namespace {
 
+// E (Pa) and nu (-) of a material table, read only when the table gives E (a model without
+// the Hertz-Mindlin slots does not use them, and its stored config does not state them).
+void read_hertz_moduli(const ConfigNode& t, double& young, double& poisson) {
+  if (!t.has("young_modulus") && !t.has("poisson_ratio")) return;
+  young = t.positive("young_modulus", young);
+  poisson = t.number_in("poisson_ratio", 0.3, 0.0, 0.5);
+}
+
+// The Hertz-Mindlin slots need E and nu of the particles and the walls.
+void require_hertz_moduli(const ConfigNode& root, const RunConfig& c) {
+  if (!needs_hertz_moduli(c.contact)) return;
+  const char* why = "is required by contact.normal = \"hertz\" or contact.tangential = \"mindlin\" (Pa)";
+  if (!(c.particle.young_modulus > 0.0)) root.table("particle").fail("young_modulus", why);
+  if (!(c.wall.young_modulus > 0.0)) root.table("wall").fail("young_modulus", why);
+}
+
 ParticleSpec read_particle(const ConfigNode& t) {
   ParticleSpec p;
   p.density = t.positive("density", p.density);
@@ -41,6 +57,7 @@ ParticleSpec read_particle(const ConfigNode& t) {
   p.diameter_max = t.positive("diameter_max", p.diameter_max);
   if (p.diameter_min > p.diameter_max)
     t.fail("diameter_min", "must not exceed particle.diameter_max (" + std::to_string(p.diameter_max) + ")");
+  read_hertz_moduli(t, p.young_modulus, p.poisson_ratio);
   return p;
 }
 
@@ -49,6 +66,7 @@ WallSpec read_wall(const ConfigNode& t) {
   w.normal_stiffness = t.positive("normal_stiffness", w.normal_stiffness);
   w.shear_stiffness = t.positive("shear_stiffness", w.shear_stiffness);
   w.friction = t.non_negative("friction", w.friction);
+  read_hertz_moduli(t, w.young_modulus, w.poisson_ratio);
   return w;
 }
 
@@ -315,6 +333,7 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
   c.wall_friction = contact.choice("wall_friction", "own", {"own", "min"}) == "own" ? WallFrictionRule::kOwn
                                                                                     : WallFrictionRule::kMinimum;
   c.contact = read_contact_model(contact);
+  require_hertz_moduli(root, c);
   c.integration = read_integration(root.table("integration"));
   // Bonds join the candidate pairs within bond_gap, and only pairs closer than the Verlet skin
   // are candidates (scenario/bonds.hpp install_bonds).
@@ -372,9 +391,11 @@ RunConfig load_run_config(Scenario scenario, const std::string& config_path,
 
 PhysicsSettings make_physics(const RunConfig& c) {
   PhysicsSettings ph;
-  ph.particle_materials.push_back(
-      {"seed", c.particle.density, c.particle.normal_stiffness, c.particle.shear_stiffness, c.particle.friction});
-  ph.wall_materials.push_back({"wall", c.wall.normal_stiffness, c.wall.shear_stiffness, c.wall.friction});
+  ph.particle_materials.push_back({"seed", c.particle.density, c.particle.normal_stiffness,
+                                   c.particle.shear_stiffness, c.particle.friction, c.particle.young_modulus,
+                                   c.particle.poisson_ratio});
+  ph.wall_materials.push_back({"wall", c.wall.normal_stiffness, c.wall.shear_stiffness, c.wall.friction,
+                               c.wall.young_modulus, c.wall.poisson_ratio});
   ph.stiffness_rule = c.stiffness_rule;
   ph.wall_friction = c.wall_friction;
   ph.model = c.contact;

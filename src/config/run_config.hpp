@@ -17,12 +17,16 @@ struct ParticleSpec {                 // [particle]
   double friction = 0.20;             // mu_pp (-)
   double diameter_min = 6e-3;         // m; diameters uniform on [min, max]
   double diameter_max = 7e-3;         // m
+  double young_modulus = 0.0;         // E (Pa), read when given; the Hertz-Mindlin slots need it
+  double poisson_ratio = 0.0;         // nu (-), read with young_modulus
 };
 
 struct WallSpec {                     // [wall]
   double normal_stiffness = 4000e3;   // kn_w (N/m)
   double shear_stiffness = 1000e3;    // ks_w (N/m)
   double friction = 0.23;             // mu_pw (-)
+  double young_modulus = 0.0;         // E (Pa), read when given; the Hertz-Mindlin slots need it
+  double poisson_ratio = 0.0;         // nu (-), read with young_modulus
 };
 
 struct IntegrationSpec {              // [integration]

@@ -1,20 +1,13 @@
-// One step of the contact law for one contact (physics.md section 2, steps 1-6).
+// One step of the baseline contact law for one contact (physics.md section 2, steps 1-6).
 // Geometry (normal, overlap, shear increment) is computed by the caller once per contact;
 // the law only turns it into forces, as in YADE's geometry -> physics -> law pipeline.
 #pragma once
 #include <type_traits>
 #include "contact/history.hpp"
+#include "contact/pair_context.hpp"
 #include "contact/slots.hpp"
 
 namespace colza {
-
-struct ContactKinematics {
-  Vec3 normal;           // unit normal n from body 1 to body 2
-  double overlap;        // un = R1 + R2 - |x2 - x1| (sphere-wall: R - distance), > 0 touching (m)
-  Vec3 shear_increment;  // dus = (vr - (vr.n) n) dt, vr = velocity of 2 relative to 1 at c (m)
-  double twist_angle;    // dt/2 (w1 + w2) . n_old (rad): spin of the pair about the PREVIOUS normal
-                         // (YADE ScGeom::precompute computes it before updating the normal)
-};
 
 enum class ContactEvent : std::uint8_t {
   kNone,
@@ -30,6 +23,15 @@ struct ContactOutcome {
   ContactEvent event = ContactEvent::kNone;
   double slip_dissipation = 0.0;   // J, this step (Coulomb sliding)
   double bond_break_energy = 0.0;  // J, shear-spring energy released by a shear bond break this step
+  double normal_energy_lost = 0.0;  // J, a shear break in tension: the stretched normal spring's energy,
+                                    // gone with the contact (it carries no force from this step on)
+  // The generic tier's mechanisms (contact/generic_law.hpp); zero on the baseline's paths:
+  Vec3 moment_on_2 = Vec3::Zero();    // rolling moment on body 2 (N m); body 1 gets the opposite
+  bool has_moment = false;            // a rolling slot acts on this contact
+  double rolling_dissipation = 0.0;   // J, this step (rolling cap)
+  double viscous_dissipation = 0.0;   // J, this step (dashpots)
+  double plastic_dissipation = 0.0;   // J, this step (elasto-plastic normal law)
+  double stiffness_change = 0.0;      // J, this step: the Mindlin spring's energy lost as kt changed
 };
 
 // Bond slot behaviour, one overload per bond implementation.
@@ -102,7 +104,10 @@ inline ContactOutcome evaluate_contact(const Normal& normal_law, const Tangentia
   double fn_applied = fn;
   if (bond_state == BondState::kBrokeShear) {
     out.event = ContactEvent::kBondBrokeShear;
-    if (fn < 0.0) fn_applied = 0.0;
+    if (fn < 0.0) {
+      fn_applied = 0.0;
+      out.normal_energy_lost = normal_law.energy(p, fn);
+    }
   }
   h.shear_force = fs;
   h.normal = k.normal;

@@ -6,19 +6,25 @@
 #include <cstdint>
 #include <vector>
 #include "contact/history.hpp"
+#include "contact/slot_state.hpp"
 #include "core/types.hpp"
 
 namespace colza {
 
+// Each list keeps, beside the core histories, the slots' state: `slot_state` holds
+// size() x stride doubles (ContactStore::slot_state_layout), row c for pair c; empty for the
+// baseline.
 struct ParticlePairList {
   std::vector<Index> first, second;
   std::vector<ContactHistory> history;
+  std::vector<double> slot_state;
   std::size_t size() const { return first.size(); }
 };
 
 struct WallPairList {
   std::vector<Index> wall, particle;
   std::vector<ContactHistory> history;
+  std::vector<double> slot_state;
   std::size_t size() const { return wall.size(); }
 };
 
@@ -31,6 +37,11 @@ class ContactStore {
   // lists. A bonded pair missing from the new list is kept (a bond holds beyond the skin).
   void adopt_particle_pairs(std::vector<Index> first, std::vector<Index> second);
   void adopt_wall_pairs(std::vector<Index> wall, std::vector<Index> particle);
+
+  // The slots' per-pair state (contact/slot_state.hpp). A layout other than the present one
+  // starts every row at zero (the Stepper sets its model's layout when it prepares a world).
+  void set_slot_state_layout(const SlotStateLayout& layout);
+  const SlotStateLayout& slot_state_layout() const { return layout_; }
 
   // Rename particles after removal/reordering (old_to_new[i] == kRemoved drops the pair).
   void renumber_particles(const std::vector<Index>& old_to_new);
@@ -49,6 +60,7 @@ class ContactStore {
 
  private:
   std::uint64_t revision_ = 0;
+  SlotStateLayout layout_;
 };
 
 }  // namespace colza

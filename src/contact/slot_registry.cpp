@@ -1,6 +1,7 @@
 #include "contact/slot_registry.hpp"
 
 #include <functional>
+#include <limits>
 
 namespace colza {
 
@@ -13,10 +14,18 @@ struct Registration {
 };
 
 // ---- registration tables: one row per implementation ------------------------------
+// Parameters are read from [contact.<name>]; units and sources are in the slot's header.
 
 const std::vector<Registration<NormalSlot>>& normal_registry() {
   static const std::vector<Registration<NormalSlot>> rows = {
       {LinearNormal::kName, [](const ConfigNode&) { return NormalSlot(LinearNormal{}); }},
+      {HertzNormal::kName, [](const ConfigNode&) { return NormalSlot(HertzNormal{}); }},
+      {WaltonBraunNormal::kName,
+       [](const ConfigNode& p) {
+         WaltonBraunNormal n;
+         n.unloading_stiffness_ratio = p.number_in("unloading_stiffness_ratio", 2.0, 1.0, 1e6);  // k2 / k1 (-)
+         return NormalSlot(n);
+       }},
   };
   return rows;
 }
@@ -24,6 +33,37 @@ const std::vector<Registration<NormalSlot>>& normal_registry() {
 const std::vector<Registration<TangentialSlot>>& tangential_registry() {
   static const std::vector<Registration<TangentialSlot>> rows = {
       {CoulombTangential::kName, [](const ConfigNode&) { return TangentialSlot(CoulombTangential{}); }},
+      {MindlinTangential::kName, [](const ConfigNode&) { return TangentialSlot(MindlinTangential{}); }},
+  };
+  return rows;
+}
+
+const std::vector<Registration<DampingSlot>>& damping_registry() {
+  static const std::vector<Registration<DampingSlot>> rows = {
+      {NoDamping::kName, [](const ConfigNode&) { return DampingSlot(NoDamping{}); }},
+      {ViscousDamping::kName,
+       [](const ConfigNode& p) {
+         ViscousDamping d;
+         d.normal_ratio = p.number_in("normal_damping_ratio", 0.0, 0.0, 0.999);          // zeta_n (-)
+         d.tangential_ratio = p.number_in("tangential_damping_ratio", 0.0, 0.0, 0.999);  // zeta_t (-)
+         return DampingSlot(d);
+       }},
+  };
+  return rows;
+}
+
+const std::vector<Registration<RollingSlot>>& rolling_registry() {
+  static const std::vector<Registration<RollingSlot>> rows = {
+      {NoRolling::kName, [](const ConfigNode&) { return RollingSlot(NoRolling{}); }},
+      {ElasticPlasticRolling::kName,
+       [](const ConfigNode& p) {
+         ElasticPlasticRolling r;
+         r.stiffness_factor = p.positive("stiffness_factor", 1.0);  // beta (-)
+         r.friction = p.non_negative("friction", 0.0);              // mu_r (-)
+         r.form = p.choice("form", "yade", {"yade", "pfc"}) == "yade" ? RollingForm::kYade : RollingForm::kPfc;
+         r.at_walls = p.boolean("at_walls", false);
+         return RollingSlot(r);
+       }},
   };
   return rows;
 }
@@ -36,6 +76,17 @@ const std::vector<Registration<BondSlot>>& bond_registry() {
          ContactBond b;
          b.normal_strength = p.non_negative("normal_strength", 0.0);  // Cn (N)
          b.shear_strength = p.non_negative("shear_strength", 0.0);    // Cs (N)
+         return BondSlot(b);
+       }},
+      {LoadInducedBond::kName,
+       [](const ConfigNode& p) {
+         constexpr double kNoCap = std::numeric_limits<double>::infinity();
+         LoadInducedBond b;
+         b.onset_force = p.non_negative("onset_force", 0.0);                    // F_on (N)
+         b.normal_strength_ratio = p.non_negative("normal_strength_ratio", 0.0);  // a_n (-)
+         b.shear_strength_ratio = p.non_negative("shear_strength_ratio", 0.0);    // a_s (-)
+         if (p.has("normal_strength_cap")) b.normal_strength_cap = p.non_negative("normal_strength_cap", kNoCap);
+         if (p.has("shear_strength_cap")) b.shear_strength_cap = p.non_negative("shear_strength_cap", kNoCap);
          return BondSlot(b);
        }},
   };
@@ -88,25 +139,38 @@ const char* to_string(BondInstallMoment moment) {
   return "?";
 }
 
+const char* to_string(RollingForm form) { return form == RollingForm::kYade ? "yade" : "pfc"; }
+
 ContactModel read_contact_model(const ConfigNode& contact) {
   ContactModel m;
   m.normal = choose(contact, "normal", LinearNormal::kName, normal_registry());
   m.tangential = choose(contact, "tangential", CoulombTangential::kName, tangential_registry());
+  m.damping = choose(contact, "damping", NoDamping::kName, damping_registry());
+  m.rolling = choose(contact, "rolling", NoRolling::kName, rolling_registry());
   m.bond = choose(contact, "bond", NoBond::kName, bond_registry());
   m.bond_install = parse_install(contact);
   m.bond_gap = contact.non_negative("bond_gap", 0.0);
-  if (std::holds_alternative<NoBond>(m.bond)) m.bond_install = BondInstallMoment::kNever;
+  // Only the contact bond is installed at a moment; a load-induced bond forms under load.
+  if (!std::holds_alternative<ContactBond>(m.bond)) m.bond_install = BondInstallMoment::kNever;
   return m;
+}
+
+bool needs_hertz_moduli(const ContactModel& model) {
+  return std::holds_alternative<HertzNormal>(model.normal) || std::holds_alternative<MindlinTangential>(model.tangential);
 }
 
 std::vector<std::string> normal_slot_names() { return names_of(normal_registry()); }
 std::vector<std::string> tangential_slot_names() { return names_of(tangential_registry()); }
+std::vector<std::string> damping_slot_names() { return names_of(damping_registry()); }
+std::vector<std::string> rolling_slot_names() { return names_of(rolling_registry()); }
 std::vector<std::string> bond_slot_names() { return names_of(bond_registry()); }
 
 std::string describe(const ContactModel& model) {
   std::string s;
   std::visit([&](const auto& n) { s += std::string("normal=") + n.kName; }, model.normal);
   std::visit([&](const auto& t) { s += std::string(", tangential=") + t.kName; }, model.tangential);
+  std::visit([&](const auto& d) { s += std::string(", damping=") + d.kName; }, model.damping);
+  std::visit([&](const auto& r) { s += std::string(", rolling=") + r.kName; }, model.rolling);
   std::visit([&](const auto& b) { s += std::string(", bond=") + b.kName; }, model.bond);
   s += std::string(", bond_install=") + to_string(model.bond_install);
   return s;

@@ -9,14 +9,19 @@
 
 namespace colza {
 
-// Reads contact.normal / contact.tangential / contact.bond and the chosen
+// Reads contact.normal / .tangential / .damping / .rolling / .bond and the chosen
 // implementations' parameter tables; validates them.
 ContactModel read_contact_model(const ConfigNode& contact);
 
 // Registered names, per slot (for --help and error messages).
 std::vector<std::string> normal_slot_names();
 std::vector<std::string> tangential_slot_names();
+std::vector<std::string> damping_slot_names();
+std::vector<std::string> rolling_slot_names();
 std::vector<std::string> bond_slot_names();
+
+// Whether a slot of the model needs E and nu of every material (Hertz, Mindlin).
+bool needs_hertz_moduli(const ContactModel& model);
 
 // Names of the slot implementations in use, e.g. {"linear", "coulomb", "contact_bond"}.
 std::string describe(const ContactModel& model);

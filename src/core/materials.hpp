@@ -29,6 +29,8 @@ struct ParticleMaterial {
   double kn = 0.0;        // normal stiffness of the entity (N/m)
   double ks = 0.0;        // shear stiffness of the entity (N/m)
   double friction = 0.0;  // particle-particle friction coefficient mu_pp (-)
+  double young_modulus = 0.0;  // E (Pa), for the Hertz-Mindlin slots; 0 when not given
+  double poisson_ratio = 0.0;  // nu (-), for the Hertz-Mindlin slots
 };
 
 struct WallMaterial {
@@ -36,6 +38,8 @@ struct WallMaterial {
   double kn = 0.0;        // N/m
   double ks = 0.0;        // N/m
   double friction = 0.0;  // particle-wall friction coefficient mu_pw (-), see WallFrictionRule
+  double young_modulus = 0.0;  // E (Pa), for the Hertz-Mindlin slots; 0 when not given
+  double poisson_ratio = 0.0;  // nu (-)
 };
 
 // Everything the contact law needs to know about one pair of entities.
@@ -43,7 +47,17 @@ struct PairParameters {
   double kn = 0.0;        // contact normal stiffness Kn (N/m)
   double ks = 0.0;        // contact shear stiffness Ks (N/m)
   double friction = 0.0;  // Coulomb coefficient mu
+  // Hertz-Mindlin moduli of the pair (physics.md section 7.2), 0 when a material has no E:
+  //   1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2,  1/G* = 2(2 - nu1)(1 + nu1)/E1 + 2(2 - nu2)(1 + nu2)/E2 (Pa).
+  double effective_young = 0.0;  // E* (Pa)
+  double effective_shear = 0.0;  // G* (Pa)
 };
+
+// E* and G* of two materials (Pa), as PairParameters states; both 0 unless both E > 0.
+struct HertzModuli {
+  double effective_young = 0.0, effective_shear = 0.0;
+};
+HertzModuli hertz_moduli(double young_1, double poisson_1, double young_2, double poisson_2);
 
 double combine_stiffness(double k1, double k2, StiffnessRule rule);
 

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <vector>
 #include "contact/contact_store.hpp"
+#include "contact/slots.hpp"
 #include "core/materials.hpp"
 #include "core/particles.hpp"
 #include "walls/wall.hpp"
@@ -26,10 +27,12 @@ struct DeepestOverlap {
   std::size_t first = 0, second = 0;
 };
 
-// Over the touching contacts, the overlap Fn / Kn (the linear normal law; a bond in tension
-// has none) relative to the smaller sphere's radius (a wall's: the sphere's).
+// Over the touching contacts, the overlap that the normal law reads from the contact's
+// normal force (Fn / Kn for the linear law; a bond in tension has none) relative to the
+// smaller sphere's radius (a wall's: the sphere's).
 DeepestOverlap deepest_overlap(const ParticleArrays& particles, const std::vector<Wall>& walls,
-                               const ContactStore& contacts, const PairTable& pairs);
+                               const ContactStore& contacts, const PairTable& pairs,
+                               const ContactModel& model = ContactModel{});
 
 // A particle's radius in one step: it could then pass through a neighbour between two force
 // evaluations. Sound motion stays far below: a sphere falling 0.2 m moves 2 m/s x 7e-6 s =

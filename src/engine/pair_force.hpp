@@ -52,6 +52,41 @@ inline PairGap pair_gap(const ParticleArrays& p, Index i, Index j) {
   return {d, dot(d, d), p.radius[i] + p.radius[j]};
 }
 
+// The contact geometry of particle pair (i < j) found not apart (or touching): normal n from
+// i to j, overlap un (m), lever arms from each centre to the contact point (middle of the
+// overlap, m), the relative velocity of j against i at that point (m/s) and both spins.
+struct PairGeometry {
+  V3 n;
+  double overlap;
+  V3 arm_i, arm_j, rel_vel, wi, wj;
+};
+[[gnu::always_inline]] inline PairGeometry pair_geometry(const ParticleArrays& p, Index i, Index j,
+                                                         const PairGap& gap) {
+  PairGeometry g;
+  const V3 xi = v3(p.position[i]), xj = v3(p.position[j]);
+  const double dist = std::sqrt(gap.dist2);
+  g.n = gap.d / dist;
+  g.overlap = gap.reach - dist;
+  const V3 point = xi + (p.radius[i] - 0.5 * g.overlap) * g.n;  // middle of the overlap
+  g.arm_i = point - xi;
+  g.arm_j = point - xj;
+  g.wi = v3(p.angular_velocity[i]);
+  g.wj = v3(p.angular_velocity[j]);
+  g.rel_vel = (v3(p.velocity[j]) + cross(g.wj, g.arm_j)) - (v3(p.velocity[i]) + cross(g.wi, g.arm_i));
+  return g;
+}
+// The baseline law's kinematics of that geometry: shear increment (vr - (vr.n) n) dt and the
+// twist dt/2 (w1 + w2) . n_old about the previous normal (zero for a new contact).
+[[gnu::always_inline]] inline ContactKinematics pair_kinematics(const PairGeometry& g, double dt, double half_dt,
+                                                                const Vec3& previous_normal) {
+  ContactKinematics k;
+  k.normal = vec(g.n);
+  k.overlap = g.overlap;
+  k.shear_increment = vec((g.rel_vel - dot(g.rel_vel, g.n) * g.n) * dt);
+  k.twist_angle = half_dt * dot(g.wi + g.wj, v3(previous_normal));
+  return k;
+}
+
 // Geometry and contact law of one particle pair (i < j): the arithmetic of the reference
 // force loop, expression for expression. Returns false when the pair carries no force;
 // otherwise f = force on body 2 (j), and arm_i, arm_j the lever arms.
@@ -63,21 +98,10 @@ template <class Normal, class Tangential, class Bond, class Sink>
                                                        V3& arm_i, V3& arm_j, Sink& sink) {
   const PairGap gap = pair_gap(p, i, j);
   if (!h.touching && gap.apart()) return false;  // candidate, not in contact
-  const V3 xi = v3(p.position[i]), xj = v3(p.position[j]);
-  const double ri = p.radius[i];
-  const double dist = std::sqrt(gap.dist2);
-  const V3 n = gap.d / dist;
-  const double overlap = gap.reach - dist;
-  const V3 point = xi + (ri - 0.5 * overlap) * n;  // middle of the overlap
-  arm_i = point - xi;
-  arm_j = point - xj;
-  const V3 wi = v3(p.angular_velocity[i]), wj = v3(p.angular_velocity[j]);
-  const V3 rel_vel = (v3(p.velocity[j]) + cross(wj, arm_j)) - (v3(p.velocity[i]) + cross(wi, arm_i));
-  ContactKinematics k;
-  k.normal = vec(n);
-  k.overlap = overlap;
-  k.shear_increment = vec((rel_vel - dot(rel_vel, n) * n) * dt);
-  k.twist_angle = half_dt * dot(wi + wj, v3(h.normal));  // previous normal (zero for a new contact)
+  const PairGeometry g = pair_geometry(p, i, j, gap);
+  arm_i = g.arm_i;
+  arm_j = g.arm_j;
+  const ContactKinematics k = pair_kinematics(g, dt, half_dt, h.normal);
   const PairParameters& q = pairs.particle_particle(p.material[i], p.material[j]);
   // State before the law runs: its stored energy is lost if the contact vanishes this step
   // (evaluated only then; same expression as evaluating it up front).
@@ -93,6 +117,7 @@ template <class Normal, class Tangential, class Bond, class Sink>
   sink.event(out.event);
   sink.slip(out.slip_dissipation);
   sink.released(out.bond_break_energy);
+  sink.broken(out.normal_energy_lost);
   f = v3(out.force_on_2);
   return true;
 }

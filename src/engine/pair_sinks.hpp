@@ -9,6 +9,7 @@ namespace colza::detail {
 
 struct ForceLoopTotals {
   double slip = 0.0, broken = 0.0, released = 0.0, wall_power = 0.0;
+  double rolling = 0.0, viscous = 0.0, plastic = 0.0, stiffness_change = 0.0;  // the generic tier's channels (J)
   std::uint64_t broken_tension = 0, broken_shear = 0;
 };
 
@@ -29,16 +30,32 @@ struct SerialSink {
   static constexpr bool kKeepsSlip = true;
   ForceLoopTotals& t;
   void slip(double s) { t.slip += s; }
+  void rolling(double e) { t.rolling += e; }
+  void viscous(double e) { t.viscous += e; }
+  void plastic(double e) { t.plastic += e; }
+  void stiffness_change(double e) { t.stiffness_change += e; }
   void broken(double e) { t.broken += e; }
   void released(double e) { t.released += e; }
   void event(ContactEvent e) { count_event(e, t.broken_tension, t.broken_shear); }
 };
 struct LogSink {
   static constexpr bool kKeepsSlip = true;
-  std::vector<double> slips, brokens, releases;
+  std::vector<double> slips, brokens, releases, rollings, viscouses, plastics, stiffness_changes;
   std::uint64_t broken_tension = 0, broken_shear = 0;
   void slip(double s) {
     if (s != 0.0) slips.push_back(s);
+  }
+  void rolling(double e) {
+    if (e != 0.0) rollings.push_back(e);
+  }
+  void viscous(double e) {
+    if (e != 0.0) viscouses.push_back(e);
+  }
+  void plastic(double e) {
+    if (e != 0.0) plastics.push_back(e);
+  }
+  void stiffness_change(double e) {
+    if (e != 0.0) stiffness_changes.push_back(e);
   }
   void broken(double e) {
     if (e != 0.0) brokens.push_back(e);
@@ -51,6 +68,10 @@ struct LogSink {
     slips.clear();
     brokens.clear();
     releases.clear();
+    rollings.clear();
+    viscouses.clear();
+    plastics.clear();
+    stiffness_changes.clear();
     broken_tension = broken_shear = 0;
   }
   // Adds the logged values to the totals in logged order (what a SerialSink would have done).
@@ -58,18 +79,27 @@ struct LogSink {
     for (double v : slips) t.slip += v;
     for (double v : brokens) t.broken += v;
     for (double v : releases) t.released += v;
+    for (double v : rollings) t.rolling += v;
+    for (double v : viscouses) t.viscous += v;
+    for (double v : plastics) t.plastic += v;
+    for (double v : stiffness_changes) t.stiffness_change += v;
     t.broken_tension += broken_tension;
     t.broken_shear += broken_shear;
   }
 };
 
-// A sink that drops the slip energy and passes everything else (bond-break energies and
-// counts, which the results report) to `inner`: for steps that keep no energy ledger.
+// A sink that drops the slip energy and the generic tier's dissipations, and passes
+// everything else (bond-break energies and counts, which the results report) to `inner`: for
+// steps that keep no energy ledger.
 template <class Inner>
 struct WithoutSlip {
   static constexpr bool kKeepsSlip = false;
   Inner& inner;
   void slip(double) {}
+  void rolling(double) {}
+  void viscous(double) {}
+  void plastic(double) {}
+  void stiffness_change(double) {}
   void broken(double e) { inner.broken(e); }
   void released(double e) { inner.released(e); }
   void event(ContactEvent e) { inner.event(e); }

@@ -16,6 +16,7 @@
 #include "core/interrupt.hpp"
 #include "engine/force_outputs.hpp"
 #include "engine/force_partition.hpp"
+#include "engine/generic_pair_force.hpp"
 #include "engine/pair_batch.hpp"
 #include "engine/pair_force.hpp"
 #include "engine/pair_sinks.hpp"
@@ -26,12 +27,15 @@ namespace colza {
 
 Stepper::Stepper(PhysicsSettings physics)
     : physics_(std::move(physics)),
+      slot_state_layout_(slot_state_layout(physics_.model)),
       pairs_(physics_.particle_materials, physics_.wall_materials, physics_.stiffness_rule, physics_.wall_friction),
       neighbours_(physics_.skin) {}
 
 namespace {
 
 using detail::cross;
+using detail::generic_particle_pair_force;
+using detail::generic_wall_pair_force;
 using detail::particle_pair_force;
 using detail::V3;
 using detail::kHasBatchedKernel;
@@ -57,78 +61,115 @@ double seconds_now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// Particle pairs [begin, end) in pair order: the batched kernel for the built-in law, the
-// scalar reference for any other slot combination (same results, see pair_batch.hpp).
-template <class Normal, class Tangential, class Bond, class Out, class Sink>
-[[gnu::always_inline]] inline void particle_pair_range(const Normal& normal_law, const Tangential& tangential_law,
-                                                       const Bond& bond_law, bool bond_new_contacts,
-                                                       const ParticleArrays& p, const PairTable& pairs, double dt,
-                                                       ParticlePairList& pp, std::size_t begin,
+// The two tiers of the contact law, as the force loops take them. BaselineLaw: the linear
+// spring, the Coulomb cap and `Bond` (none or the contact bond), compiled for that bond and
+// computed by the batched kernels. GenericLaw: any slot combination, chosen per contact at
+// run time (contact/generic_law.hpp), with the slots' state rows.
+template <class Bond>
+struct BaselineLaw {
+  LinearNormal normal;
+  CoulombTangential tangential;
+  const Bond& bond;
+  bool bond_new_contacts;
+};
+struct GenericLaw {
+  const ContactModel& model;
+  const SlotStateLayout& layout;
+  bool bond_new_contacts;
+};
+
+// Particle pairs [begin, end) in pair order: the batched kernel for the baseline with one
+// particle material, the scalar reference otherwise (same results, see pair_batch.hpp); the
+// generic law for the generic tier.
+template <class Law, class Out, class Sink>
+[[gnu::always_inline]] inline void particle_pair_range(const Law& law, const ParticleArrays& p, const PairTable& pairs,
+                                                       double dt, ParticlePairList& pp, std::size_t begin,
                                                        std::size_t end, Out& out, Sink& sink) {
   const double half_dt = 0.5 * dt;
   const Index* first = pp.first.data();
   const Index* second = pp.second.data();
   ContactHistory* history = pp.history.data();
-  if constexpr (kHasBatchedKernel<Normal, Tangential, Bond>) {
+  if constexpr (std::is_same_v<Law, GenericLaw>) {
+    const std::size_t stride = law.layout.stride;
+    double* state = pp.slot_state.data();
+    for (std::size_t c = begin; c < end; ++c) {
+      const Index i = first[c], j = second[c];
+      V3 f, t_i, t_j;
+      if (generic_particle_pair_force(law.model, law.layout, law.bond_new_contacts, p, pairs, dt, half_dt, i, j,
+                                      history[c], state + c * stride, f, t_i, t_j, sink))
+        out.carries(c, i, j, f, t_i, t_j);
+      else
+        out.none(c);
+    }
+  } else {
     if (pairs.particle_material_count() == 1) {
-      particle_pairs_batched(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt, first,
+      particle_pairs_batched(law.normal, law.tangential, law.bond, law.bond_new_contacts, p, pairs, dt, half_dt, first,
                              second, history, begin, end, out, sink);
       return;
     }
-  }
-  for (std::size_t c = begin; c < end; ++c) {
-    const Index i = first[c], j = second[c];
-    V3 f, arm_i, arm_j;
-    if (particle_pair_force(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt, i, j,
-                            history[c], f, arm_i, arm_j, sink))
-      out.carries(c, i, j, f, cross(arm_i, f), cross(arm_j, f));
-    else
-      out.none(c);
+    for (std::size_t c = begin; c < end; ++c) {
+      const Index i = first[c], j = second[c];
+      V3 f, arm_i, arm_j;
+      if (particle_pair_force(law.normal, law.tangential, law.bond, law.bond_new_contacts, p, pairs, dt, half_dt, i,
+                              j, history[c], f, arm_i, arm_j, sink))
+        out.carries(c, i, j, f, cross(arm_i, f), cross(arm_j, f));
+      else
+        out.none(c);
+    }
   }
 }
 
-// Wall pairs [begin, end) of one wall in pair order: the batched kernel for the built-in law
-// with one particle material, the scalar function otherwise (same results, see
-// wall_batch.hpp). `out.carries(c, i, f, torque)`, `out.none(c)` as in wall_pairs_batched.
-template <class Normal, class Tangential, class Out, class Sink>
-[[gnu::always_inline]] inline void wall_pair_range(const Normal& normal_law, const Tangential& tangential_law,
-                                                   const ParticleArrays& p, const Wall& wall, const PairTable& pairs,
-                                                   double dt, WallPairList& pw, std::size_t begin, std::size_t end,
-                                                   Out& out, Sink& sink) {
+// Wall pairs [begin, end) of one wall in pair order: the batched kernel for the baseline with
+// one particle material, the scalar function otherwise (same results, see wall_batch.hpp); the
+// generic law for the generic tier. `out.carries(c, i, f, torque)`, `out.none(c)` as in
+// wall_pairs_batched.
+template <class Law, class Out, class Sink>
+[[gnu::always_inline]] inline void wall_pair_range(const Law& law, const ParticleArrays& p, const Wall& wall,
+                                                   const PairTable& pairs, double dt, WallPairList& pw,
+                                                   std::size_t begin, std::size_t end, Out& out, Sink& sink) {
   const double half_dt = 0.5 * dt;
   const Index* particle = pw.particle.data();
   ContactHistory* history = pw.history.data();
-  if constexpr (kHasBatchedKernel<Normal, Tangential>) {
+  if constexpr (std::is_same_v<Law, GenericLaw>) {
+    const std::size_t stride = law.layout.stride;
+    double* state = pw.slot_state.data();
+    for (std::size_t c = begin; c < end; ++c) {
+      Vec3 f, torque;
+      if (generic_wall_pair_force(law.model, law.layout, p, wall, pairs, dt, half_dt, particle[c], history[c],
+                                  state + c * stride, f, torque, sink))
+        out.carries(c, particle[c], f, torque);
+      else
+        out.none(c);
+    }
+  } else {
     if (pairs.particle_material_count() == 1) {
-      wall_pairs_batched(normal_law, tangential_law, p, wall, pairs, dt, half_dt, particle, history, begin, end, out,
+      wall_pairs_batched(law.normal, law.tangential, p, wall, pairs, dt, half_dt, particle, history, begin, end, out,
                          sink);
       return;
     }
-  }
-  for (std::size_t c = begin; c < end; ++c) {
-    Vec3 f, torque;
-    if (wall_pair_force(normal_law, tangential_law, p, wall, pairs, dt, half_dt, particle[c], history[c], f, torque,
-                        sink))
-      out.carries(c, particle[c], f, torque);
-    else
-      out.none(c);
+    for (std::size_t c = begin; c < end; ++c) {
+      Vec3 f, torque;
+      if (wall_pair_force(law.normal, law.tangential, p, wall, pairs, dt, half_dt, particle[c], history[c], f, torque,
+                          sink))
+        out.carries(c, particle[c], f, torque);
+      else
+        out.none(c);
+    }
   }
 }
 
 // Serial particle-pair loop: forces scattered straight onto the bodies. kSlip: sum the slip
 // energy (the energy ledger is kept).
-template <bool kSlip, class Normal, class Tangential, class Bond>
-[[gnu::flatten]] void particle_pairs_serial(const Normal& normal_law, const Tangential& tangential_law,
-                                             const Bond& bond_law, bool bond_new_contacts, World& world,
-                                             const PairTable& pairs, ForceLoopTotals& totals) {
+template <bool kSlip, class Law>
+[[gnu::flatten]] void particle_pairs_serial(const Law& law, World& world, const PairTable& pairs,
+                                             ForceLoopTotals& totals) {
   ParticleArrays& p = world.particles;
   p.clear_forces();
   auto& pp = world.contacts.particle_pairs;
   ScatterToBodies out{p.force.data(), p.torque.data()};
   SerialSink serial{totals};
   with_slip_if<kSlip>(serial, [&](auto& sink) {
-    particle_pair_range(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, world.dt, pp, 0, pp.size(),
-                        out, sink);
+    particle_pair_range(law, p, pairs, world.dt, pp, 0, pp.size(), out, sink);
   });
 }
 
@@ -149,10 +190,9 @@ template <bool kSlip, class Normal, class Tangential, class Bond>
 // (integrate_motion): their forces are final after its phase 2, and no other thread reads
 // them after the barrier (phase 2 touches only its range's particles, the slots and the
 // walls).
-template <bool kSlip, class Normal, class Tangential, class Bond>
-[[gnu::flatten]] void all_pairs_threaded(const Normal& normal_law, const Tangential& tangential_law,
-                                          const Bond& bond_law, bool bond_new_contacts, World& world,
-                                          const PairTable& pairs, ForceLoopTotals& totals, ForcePartition& part,
+template <bool kSlip, class Law>
+[[gnu::flatten]] void all_pairs_threaded(const Law& law, World& world, const PairTable& pairs,
+                                          ForceLoopTotals& totals, ForcePartition& part,
                                           const IntegratorSettings* motion) {
   ParticleArrays& p = world.particles;
   auto& pp = world.contacts.particle_pairs;
@@ -179,8 +219,7 @@ template <bool kSlip, class Normal, class Tangential, class Bond>
       std::fill(force + part.particle_begin[r], force + part.particle_begin[r + 1], Vec3::Zero());
       std::fill(torque + part.particle_begin[r], torque + part.particle_begin[r + 1], Vec3::Zero());
       with_slip_if<kSlip>(part.pair_logs[r], [&](auto& sink) {
-        particle_pair_range(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, pp,
-                            part.pair_begin[r], part.pair_begin[r + 1], out, sink);
+        particle_pair_range(law, p, pairs, dt, pp, part.pair_begin[r], part.pair_begin[r + 1], out, sink);
       });
     }
     const double pair_busy = seconds_now() - started;
@@ -210,9 +249,8 @@ template <bool kSlip, class Normal, class Tangential, class Bond>
       }
       for (std::size_t w = 0; w < n_walls; ++w)
         with_slip_if<kSlip>(part.wall_logs[w * T + r], [&](auto& sink) {
-          wall_pair_range(normal_law, tangential_law, p, world.walls[w], pairs, dt, pw,
-                          part.wall_pair_begin[w * (T + 1) + r], part.wall_pair_begin[w * (T + 1) + r + 1], wall_out,
-                          sink);
+          wall_pair_range(law, p, world.walls[w], pairs, dt, pw, part.wall_pair_begin[w * (T + 1) + r],
+                          part.wall_pair_begin[w * (T + 1) + r + 1], wall_out, sink);
         });
       if (motion) integrate_motion(p, *motion, dt, part.finish_begin[r], part.finish_begin[r + 1]);
     }
@@ -233,9 +271,9 @@ template <bool kSlip, class Normal, class Tangential, class Bond>
 
 // Sphere-wall pairs (serial, after the particle pairs, as in the reference loop). kSlip as in
 // particle_pairs_serial.
-template <bool kSlip, class Normal, class Tangential>
-[[gnu::flatten]] void wall_pairs_serial(const Normal& normal_law, const Tangential& tangential_law, World& world,
-                                         const PairTable& pairs, ForceLoopTotals& totals) {
+template <bool kSlip, class Law>
+[[gnu::flatten]] void wall_pairs_serial(const Law& law, World& world, const PairTable& pairs,
+                                         ForceLoopTotals& totals) {
   ParticleArrays& p = world.particles;
   const double dt = world.dt;
   auto& pw = world.contacts.wall_pairs;
@@ -248,7 +286,7 @@ template <bool kSlip, class Normal, class Tangential>
     while (end < pw.size() && pw.wall[end] == pw.wall[begin]) ++end;
     WallTakesForce out{p.force.data(), p.torque.data(), wall, totals};
     with_slip_if<kSlip>(serial, [&](auto& sink) {
-      wall_pair_range(normal_law, tangential_law, p, wall, pairs, dt, pw, begin, end, out, sink);
+      wall_pair_range(law, p, wall, pairs, dt, pw, begin, end, out, sink);
     });
   }
 }
@@ -256,6 +294,8 @@ template <bool kSlip, class Normal, class Tangential>
 }  // namespace
 
 void Stepper::compute_forces(World& world) {
+  if (world.contacts.slot_state_layout().stride != slot_state_layout_.stride)
+    world.contacts.set_slot_state_layout(slot_state_layout_);
   const bool bond_new = physics_.model.bond_install == BondInstallMoment::kOnNewContacts;
   const int threads = worker_threads_here();
   const bool threaded = threads > 1 && world.contacts.particle_pairs.size() >= kMinPairsPerThread * 2;
@@ -275,16 +315,25 @@ void Stepper::compute_forces(World& world) {
   // term): only then is the slip energy computed and summed (set_integration_sums).
   const auto force_loop = [&](auto keep_slip) {
     constexpr bool kSlip = decltype(keep_slip)::value;
-    std::visit(
-        [&](const auto& normal, const auto& tangential, const auto& bond) {
-          if (threaded) {
-            all_pairs_threaded<kSlip>(normal, tangential, bond, bond_new, world, pairs_, totals, partition_, motion);
-          } else {
-            particle_pairs_serial<kSlip>(normal, tangential, bond, bond_new, world, pairs_, totals);
-            wall_pairs_serial<kSlip>(normal, tangential, world, pairs_, totals);
-          }
-        },
-        physics_.model.normal, physics_.model.tangential, physics_.model.bond);
+    const auto run = [&](const auto& law) {
+      if (threaded) {
+        all_pairs_threaded<kSlip>(law, world, pairs_, totals, partition_, motion);
+      } else {
+        particle_pairs_serial<kSlip>(law, world, pairs_, totals);
+        wall_pairs_serial<kSlip>(law, world, pairs_, totals);
+      }
+    };
+    if (is_baseline(physics_.model) && !physics_.generic_tier_only) {
+      std::visit(
+          [&](const auto& bond) {
+            using Bond = std::decay_t<decltype(bond)>;
+            if constexpr (kHasBatchedKernel<LinearNormal, CoulombTangential, Bond>)
+              run(BaselineLaw<Bond>{LinearNormal{}, CoulombTangential{}, bond, bond_new});
+          },
+          physics_.model.bond);
+    } else {
+      run(GenericLaw{physics_.model, world.contacts.slot_state_layout(), bond_new});
+    }
   };
   if (sums_.damping_work)
     force_loop(std::true_type{});
@@ -294,6 +343,10 @@ void Stepper::compute_forces(World& world) {
   ledger_.bond_break_lost += totals.broken;
   ledger_.shear_break_released += totals.released;
   ledger_.wall_work += totals.wall_power * world.dt;
+  ledger_.rolling_dissipated += totals.rolling;
+  ledger_.viscous_dissipated += totals.viscous;
+  ledger_.plastic_dissipated += totals.plastic;
+  ledger_.shear_stiffness_change += totals.stiffness_change;
   events_.bonds_broken_tension += totals.broken_tension;
   events_.bonds_broken_shear += totals.broken_shear;
 }

@@ -112,6 +112,7 @@ class Stepper {
   // world.dt = safety factor x `critical` (automatic), or the fixed dt (`critical` unused).
   void set_time_step(World& world, double critical);
   PhysicsSettings physics_;
+  SlotStateLayout slot_state_layout_;  // the model's per-contact slot state (contact/slot_state.hpp)
   PairTable pairs_;
   NeighbourSearch neighbours_;
   IntegrationReport last_integration_;

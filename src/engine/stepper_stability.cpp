@@ -14,17 +14,18 @@ namespace colza {
 
 void Stepper::prepare(World& world) {
   require_finite_positions(world);
+  world.contacts.set_slot_state_layout(slot_state_layout_);
   rebuild_neighbours(world);
   // Evaluated whatever the dt setting: a fixed dt is judged against it if the motion blows up.
   critical_dt_at_prepare_ = critical_time_step(world.particles, world.walls, world.contacts, pairs_,
-                                               CountedContacts::kTouchingOrOverlapping);
+                                               CountedContacts::kTouchingOrOverlapping, physics_.model);
   prepared_at_time_ = world.time;
   set_time_step(world, critical_dt_at_prepare_);
 }
 
 void Stepper::update_time_step(World& world, CountedContacts counted) {
   set_time_step(world, physics_.time_step.automatic
-                           ? critical_time_step(world.particles, world.walls, world.contacts, pairs_, counted)
+                           ? critical_time_step(world.particles, world.walls, world.contacts, pairs_, counted, physics_.model)
                            : 0.0);
 }
 
@@ -57,7 +58,7 @@ void Stepper::require_finite_positions(const World& world) const {
 void Stepper::require_sound_state(const World& world) const {
   require_finite_positions(world);
   require_bounded_speeds(world);
-  const DeepestOverlap d = deepest_overlap(world.particles, world.walls, world.contacts, pairs_);
+  const DeepestOverlap d = deepest_overlap(world.particles, world.walls, world.contacts, pairs_, physics_.model);
   if (!(d.ratio > kOverlapLimit)) return;
   char pair[96], text[400];
   if (d.with_wall) std::snprintf(pair, sizeof pair, "particle %zu and wall '%s'", d.first, world.walls[d.second].name.c_str());

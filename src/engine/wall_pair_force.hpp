@@ -23,6 +23,23 @@ namespace colza::detail {
 // walls/wall.hpp) and its normal spring carries that energy on. A separation books nothing:
 // the overlap closes within a step, and its spring's last O((omega dt)^2) energy went into
 // the motion (the energy tests' tolerance).
+// The kinematics of sphere i touching a wall at geometry g: normal, overlap, shear
+// increment of the sphere's contact point against the wall's velocity, twist about the
+// previous normal; `arm` is the lever arm from the sphere's centre to the contact point (m).
+[[gnu::always_inline]] inline ContactKinematics wall_kinematics(const ParticleArrays& p, const Wall& wall,
+                                                                const WallContactGeometry& g, Index i, double dt,
+                                                                double half_dt, const Vec3& previous_normal,
+                                                                Vec3& arm, Vec3& rel_vel) {
+  ContactKinematics k;
+  k.normal = g.normal;
+  k.overlap = g.overlap;
+  arm = g.point - p.position[i];
+  rel_vel = (p.velocity[i] + p.angular_velocity[i].cross(arm)) - wall.velocity;
+  k.shear_increment = (rel_vel - rel_vel.dot(k.normal) * k.normal) * dt;
+  k.twist_angle = half_dt * p.angular_velocity[i].dot(previous_normal);
+  return k;
+}
+
 template <class Normal, class Tangential, class Sink>
 [[gnu::always_inline]] inline bool wall_pair_force(const Normal& normal_law, const Tangential& tangential_law,
                                                    const ParticleArrays& p, const Wall& wall, const PairTable& pairs,
@@ -38,13 +55,8 @@ template <class Normal, class Tangential, class Sink>
     }
     return false;
   }
-  ContactKinematics k;
-  k.normal = g.normal;
-  k.overlap = g.overlap;
-  const Vec3 arm = g.point - p.position[i];
-  const Vec3 rel_vel = (p.velocity[i] + p.angular_velocity[i].cross(arm)) - wall.velocity;
-  k.shear_increment = (rel_vel - rel_vel.dot(k.normal) * k.normal) * dt;
-  k.twist_angle = half_dt * p.angular_velocity[i].dot(h.normal);  // previous normal
+  Vec3 arm, rel_vel;
+  const ContactKinematics k = wall_kinematics(p, wall, g, i, dt, half_dt, h.normal, arm, rel_vel);
   const PairParameters& q = pairs.particle_wall(p.material[i], wall.material);
   const ContactOutcome out = evaluate_contact(normal_law, tangential_law, NoBond{}, q, k, h, false);
   if (!out.carries_force) return false;  // separated: its springs' last energy went into the motion

@@ -3,6 +3,7 @@
 #pragma once
 #include <vector>
 #include "contact/contact_store.hpp"
+#include "contact/slot_state.hpp"
 #include "contact/slots.hpp"
 #include "core/materials.hpp"
 #include "core/particles.hpp"
@@ -31,6 +32,9 @@ struct PhysicsSettings {
   IntegratorSettings integrator;
   TimeStepSettings time_step;
   double skin = 0.0;  // Verlet skin (m)
+  // Run the generic tier even for the baseline model (tests compare the two tiers' bits;
+  // benchmarks measure the generic tier's cost).
+  bool generic_tier_only = false;
 };
 
 }  // namespace colza

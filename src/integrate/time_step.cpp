@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include <variant>
+
 #include "contact/slots.hpp"
 
 namespace colza {
@@ -19,11 +21,81 @@ bool sphere_overlaps_wall(const ParticleArrays& p, Index i, const Wall& wall) {
   return g.in_range && g.overlap > 0.0;
 }
 
+// Tangent stiffnesses of one contact at overlap un (N/m, rolling N m / rad).
+struct TangentStiffness {
+  double normal = 0.0, shear = 0.0, rolling = 0.0;
+};
+TangentStiffness tangent_stiffness(const ContactModel& m, const PairContext& c, double overlap, const double* state) {
+  TangentStiffness k;
+  k.normal = std::visit([&](const auto& n) { return n.tangent_stiffness(c, overlap, state); }, m.normal);
+  k.shear = std::visit([&](const auto& t) { return t.stiffness(c, overlap); }, m.tangential);
+  if (const auto* r = std::get_if<ElasticPlasticRolling>(&m.rolling); r && r->acts(c)) k.rolling = r->stiffness(c);
+  return k;
+}
+
+// critical_time_step for the generic tier's slots (time_step.hpp).
+double critical_time_step_of_slots(const ParticleArrays& p, const std::vector<Wall>& walls,
+                                   const ContactStore& contacts, const PairTable& pairs, CountedContacts counted,
+                                   const ContactModel& model) {
+  const bool overlaps_count = counted == CountedContacts::kTouchingOrOverlapping;
+  const SlotStateLayout& layout = contacts.slot_state_layout();
+  const std::size_t n = p.size();
+  std::vector<double> k_trans(n, 0.0), k_rot(n, 0.0);
+  std::vector<std::uint8_t> has_contact(n, 0);
+  const auto state_of = [&](const std::vector<double>& rows, std::size_t c) -> const double* {
+    static const double kNoState[8] = {};
+    return layout.stride == 0 || rows.empty() ? kNoState : rows.data() + c * layout.stride;
+  };
+  const auto& pp = contacts.particle_pairs;
+  for (std::size_t c = 0; c < pp.size(); ++c) {
+    const Index i = pp.first[c], j = pp.second[c];
+    if (!pp.history[c].touching && !(overlaps_count && spheres_overlap(p, i, j))) continue;
+    const double ri = p.radius[i], rj = p.radius[j], mi = p.mass[i], mj = p.mass[j];
+    const PairContext ctx{pairs.particle_particle(p.material[i], p.material[j]), ri, rj, ri * rj / (ri + rj),
+                          mi * mj / (mi + mj), 0.0, false};
+    const double overlap = ri + rj - (p.position[j] - p.position[i]).norm();
+    const TangentStiffness k = tangent_stiffness(model, ctx, overlap, state_of(pp.slot_state, c) + layout.normal);
+    for (const Index b : {i, j}) {
+      k_trans[b] += k.normal + k.shear;
+      k_rot[b] += k.shear * p.radius[b] * p.radius[b] + k.rolling;
+      has_contact[b] = 1;
+    }
+  }
+  const auto& pw = contacts.wall_pairs;
+  for (std::size_t c = 0; c < pw.size(); ++c) {
+    const Index i = pw.particle[c];
+    const Wall& wall = walls[pw.wall[c]];
+    if (!pw.history[c].touching && !(overlaps_count && sphere_overlaps_wall(p, i, wall))) continue;
+    const double r = p.radius[i];
+    const PairContext ctx{pairs.particle_wall(p.material[i], wall.material), r, r, r, p.mass[i], 0.0, true};
+    const double overlap = wall_sphere_geometry(wall, p.position[i], r).overlap;
+    const TangentStiffness k = tangent_stiffness(model, ctx, overlap, state_of(pw.slot_state, c) + layout.normal);
+    k_trans[i] += k.normal + k.shear;
+    k_rot[i] += k.shear * r * r + k.rolling;
+    has_contact[i] = 1;
+  }
+  static const double kNoState[8] = {};
+  double dt = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = p.radius[i];
+    if (!has_contact[i]) {  // one contact with its own material at 1 % of its radius
+      const PairContext ctx{pairs.particle_particle(p.material[i], p.material[i]), r, r, 0.5 * r, 0.5 * p.mass[i],
+                            0.0, false};
+      const TangentStiffness k = tangent_stiffness(model, ctx, 0.01 * r, kNoState);
+      k_trans[i] = k.normal + k.shear;
+      k_rot[i] = k.shear * r * r + k.rolling;
+    }
+    dt = std::min(dt, std::sqrt(p.mass[i] / k_trans[i]));
+    if (k_rot[i] > 0.0) dt = std::min(dt, std::sqrt(p.inertia[i] / k_rot[i]));
+  }
+  return dt;
+}
+
 }  // namespace
 
 double critical_time_step(const ParticleArrays& p, const std::vector<Wall>& walls, const ContactStore& contacts,
-                          const PairTable& pairs, CountedContacts counted) {
-  static_assert(kNormalLawIsLinear, "a contact's translational stiffness is taken as Kn + Ks (linear springs)");
+                          const PairTable& pairs, CountedContacts counted, const ContactModel& model) {
+  if (!is_baseline(model)) return critical_time_step_of_slots(p, walls, contacts, pairs, counted, model);
   const bool overlaps_count = counted == CountedContacts::kTouchingOrOverlapping;
   const std::size_t n = p.size();
   std::vector<double> k_trans(n, 0.0), k_shear(n, 0.0);

@@ -4,9 +4,14 @@
 // eigenvalue of the body's translational contact stiffness matrix, and kr_i = sum of
 // Ks R_i^2, the rotational analogue (shear spring at lever arm R_i). A body without
 // contacts counts one contact with a body of its own material (PFC's convention).
+// For the generic tier's slots (a model other than the baseline) Kn and Ks are the normal and
+// tangential laws' tangent stiffnesses at the contact's overlap now, kr_i adds the rolling
+// springs' kr, and a body without contacts counts one at an overlap of 1 % of its radius
+// (a Hertz contact has no stiffness at zero overlap).
 #pragma once
 #include <vector>
 #include "contact/contact_store.hpp"
+#include "contact/slots.hpp"
 #include "core/materials.hpp"
 #include "core/particles.hpp"
 #include "walls/wall.hpp"
@@ -31,6 +36,7 @@ enum class CountedContacts { kTouching, kTouchingOrOverlapping };
 // Returns min_i min(sqrt(m_i / k_i), sqrt(I_i / kr_i)) (s), without the safety factor.
 double critical_time_step(const ParticleArrays& particles, const std::vector<Wall>& walls,
                           const ContactStore& contacts, const PairTable& pairs,
-                          CountedContacts counted = CountedContacts::kTouching);
+                          CountedContacts counted = CountedContacts::kTouching,
+                          const ContactModel& model = ContactModel{});
 
 }  // namespace colza

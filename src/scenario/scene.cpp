@@ -2,12 +2,13 @@
 
 #include <utility>
 
+#include "engine/energy.hpp"
 #include "engine/stepper.hpp"
 #include "scenario/bonds.hpp"
 
 namespace colza {
 
-Table scene_table(const std::vector<std::int64_t>& particles, std::size_t walls) {
+Table scene_table(const std::vector<std::int64_t>& particles, std::size_t walls, const ContactModel& model) {
   std::vector<std::string> names{"step", "time"}, units{"1", "s"};
   const char* axes[3] = {"x", "y", "z"};
   // "p3_", "w0_": appended, not "p" + std::to_string(...): GCC 12 warns (-Wrestrict) falsely on that form.
@@ -34,9 +35,7 @@ Table scene_table(const std::vector<std::int64_t>& particles, std::size_t walls)
       for (const char* a : axes) add(p + q + a, unit);
   }
   for (const char* e : {"contacts", "bonds"}) add(e, "1");
-  for (const char* e : {"kinetic_energy", "gravitational_energy", "elastic_normal_energy", "elastic_shear_energy",
-                        "slip_dissipated", "damping_dissipated", "bond_break_lost", "shear_break_released", "wall_work"})
-    add(e, "J");
+  for (const std::string& e : energy_columns(model)) add(e, "J");  // the model's channels (engine/energy.hpp)
   return Table(std::move(names), std::move(units));
 }
 
@@ -53,7 +52,7 @@ SceneResult run_scene(const RunConfig& c, Progress& progress) {
   stepper.prepare(world);
   if (installs_bonds_at_a_moment(c.contact.bond_install)) r.bonds_installed = install_bonds(world, stepper, c.contact.bond_gap);
   r.dt = world.dt;
-  r.series = scene_table(s.record_particles, world.walls.size());
+  r.series = scene_table(s.record_particles, world.walls.size(), c.contact);
 
   StageClock clock("scene");
   progress.start_stage("scene");
@@ -80,12 +79,10 @@ SceneResult run_scene(const RunConfig& c, Progress& progress) {
         row.insert(row.end(), wall.force.data(), wall.force.data() + 3);
         row.insert(row.end(), wall.origin.data(), wall.origin.data() + 3);
       }
-      const EnergySnapshot e = stepper.energy(w);
-      const EnergyLedger& l = stepper.ledger();
       row.insert(row.end(), {static_cast<double>(w.contacts.touching_particle_contacts() + w.contacts.touching_wall_contacts()),
-                             static_cast<double>(w.contacts.bonded_contacts()), e.kinetic, e.gravitational,
-                             e.elastic_normal, e.elastic_shear, l.slip_dissipated, l.damping_dissipated,
-                             l.bond_break_lost, l.shear_break_released, l.wall_work});
+                             static_cast<double>(w.contacts.bonded_contacts())});
+      const std::vector<double> energies = energy_values(c.contact, stepper.energy(w), stepper.ledger());
+      row.insert(row.end(), energies.begin(), energies.end());
       r.series.add_row(row);
     });
     if (n % 1000 == 0) progress.update(static_cast<double>(n) / total, "");

@@ -3,6 +3,7 @@
 // particles' state, each wall's force and the energy budget. Used by the two-body
 // checks and by the YADE cross-check (micro scenes, and macro runs from a packing).
 #pragma once
+#include "contact/slots.hpp"
 #include "config/run_config.hpp"
 #include "core/stage_timing.hpp"
 #include "io/progress.hpp"
@@ -24,8 +25,9 @@ struct SceneResult {
 // count. Per particle k: pK_{x,y,z} position x(t), pK_v{x,y,z} velocity v(t - dt/2),
 // pK_w{x,y,z} angular velocity, pK_f{x,y,z} and pK_t{x,y,z} contact force and torque of
 // step t; per wall w: wW_f{x,y,z} force exerted on it by the particles, wW_{x,y,z} its
-// origin; then contacts, bonds and the energy ledger (J).
-Table scene_table(const std::vector<std::int64_t>& particles, std::size_t walls);
+// origin; then contacts, bonds and the model's energy channels (J; engine/energy.hpp
+// energy_columns: the paper's law has nine, a mechanism adds its own after wall_work).
+Table scene_table(const std::vector<std::int64_t>& particles, std::size_t walls, const ContactModel& model);
 
 SceneResult run_scene(const RunConfig& config, Progress& progress);
 

@@ -8,6 +8,7 @@
 
 #include "analysis/shear_strength.hpp"
 #include "contact/slots.hpp"
+#include "engine/wall_stiffness.hpp"
 #include "scenario/bonds.hpp"
 #include "scenario/generation.hpp"
 #include "scenario/sample_preparation.hpp"
@@ -163,11 +164,9 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
   if (c.contact.bond_install == BondInstallMoment::kAfterSettling) r.bonds_installed = install_bonds(world, stepper, c.contact.bond_gap);
 
   PlateServo servo{normal_stress * area, b.servo_relaxation, b.servo_max_speed};
-  static_assert(kNormalLawIsLinear, "the servo takes Kn per plate contact as the plate's stiffness");
-  const double plate_kn = stepper.pairs().particle_wall(0, world.walls[ids.plate].material).kn;
   auto control_plate = [&](World& w) {
     Wall& plate = w.walls[ids.plate];
-    const double k = plate_kn * std::max<Index>(1, plate.contact_count);
+    const double k = wall_normal_stiffness(w, stepper.physics(), stepper.pairs(), ids.plate);
     plate.velocity = Vec3(0.0, 0.0, -servo.advance_speed(plate.force.z(), k, w.dt));
   };
 

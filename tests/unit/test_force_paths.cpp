@@ -40,6 +40,8 @@ struct Setup {
   bool restricted_plate_edges = false;  // with shaped_walls: two of the rectangle's edges restricted (walls/wall.hpp)
   double skin = 0.3e-3;       // m; 2.5 mm makes the diagonal lattice neighbours candidates that stay apart
   int rebuild_every = 0;      // > 0: also rebuild the candidate lists every this many steps
+  bool generic_tier = false;  // run the generic law even for the baseline (contact/generic_law.hpp)
+  bool mechanisms = false;    // rolling resistance, viscous dashpots and the elasto-plastic normal law on
 };
 
 World make_world(const Setup& setup) {
@@ -96,6 +98,12 @@ PhysicsSettings physics(const Setup& setup) {
   if (setup.bonds) {
     s.model.bond = ContactBond{0.05, 0.08};  // weak: some bonds break in tension, some in shear
     s.model.bond_install = BondInstallMoment::kOnNewContacts;
+  }
+  s.generic_tier_only = setup.generic_tier;
+  if (setup.mechanisms) {
+    s.model.normal = WaltonBraunNormal{2.0};
+    s.model.damping = ViscousDamping{0.2, 0.1};
+    s.model.rolling = ElasticPlasticRolling{1.0, 0.1, RollingForm::kYade, true};
   }
   s.integrator.damping = 0.3;
   s.integrator.gravity = Vec3(0.0, 0.0, -9.81);
@@ -178,6 +186,8 @@ void expect_same_state(const World& a, const World& b) {
     ASSERT_EQ(std::memcmp(wa[c].shear_force.data(), wb[c].shear_force.data(), sizeof(Vec3)), 0) << "wall pair " << c;
     ASSERT_EQ(wa[c].touching, wb[c].touching) << "wall pair " << c;
   }
+  EXPECT_TRUE(same_bits(a.contacts.particle_pairs.slot_state, b.contacts.particle_pairs.slot_state));
+  EXPECT_TRUE(same_bits(a.contacts.wall_pairs.slot_state, b.contacts.wall_pairs.slot_state));
   ASSERT_EQ(a.walls.size(), b.walls.size());
   for (std::size_t w = 0; w < a.walls.size(); ++w) {
     EXPECT_EQ(std::memcmp(a.walls[w].force.data(), b.walls[w].force.data(), sizeof(Vec3)), 0) << "wall " << w;
@@ -380,6 +390,35 @@ TEST(ForcePaths, TwoThreadsGiveTheOneThreadBits) {
   EXPECT_NE(one.ledger.wall_work, 0.0);
   expect_same_state(one.world, two.world);
   expect_same_pair_energies(one.ledger, two.ledger);
+}
+
+// The generic tier with the baseline's slots performs the baseline's operations in the same
+// order (contact/generic_law.hpp): the same bits as the batched kernels, bonds breaking.
+TEST(ForcePaths, TheGenericTierGivesTheBaselineBits) {
+  const PathRun baseline = run_path({.bonds = true}, 1);
+  const PathRun generic = run_path({.bonds = true, .generic_tier = true}, 1);
+  EXPECT_GT(baseline.broken_tension + baseline.broken_shear, 0u);
+  EXPECT_EQ(baseline.broken_tension, generic.broken_tension);
+  EXPECT_EQ(baseline.broken_shear, generic.broken_shear);
+  expect_same_state(baseline.world, generic.world);
+  expect_same_pair_energies(baseline.ledger, generic.ledger);
+}
+
+// The generic tier with mechanisms on (rolling moments in the torques, dashpots, slot state
+// carried across rebuilds) on the threaded path: the one-thread bits at two and three threads.
+TEST(ForcePaths, TheGenericTierWithMechanismsGivesTheOneThreadBitsOnThreads) {
+  const PathRun one = run_path({.bonds = true, .mechanisms = true}, 1);
+  const PathRun two = run_path({.bonds = true, .mechanisms = true}, 2);
+  const PathRun three = run_path({.bonds = true, .mechanisms = true}, 3);
+  EXPECT_EQ(two.threaded_steps, 300u);
+  EXPECT_GT(one.ledger.rolling_dissipated, 0.0);
+  EXPECT_GT(one.ledger.viscous_dissipated, 0.0);
+  EXPECT_GT(one.ledger.plastic_dissipated, 0.0);
+  expect_same_state(one.world, two.world);
+  expect_same_state(one.world, three.world);
+  expect_same_pair_energies(one.ledger, two.ledger);
+  EXPECT_EQ(std::memcmp(&one.ledger.rolling_dissipated, &three.ledger.rolling_dissipated, sizeof(double)), 0);
+  EXPECT_EQ(std::memcmp(&one.ledger.viscous_dissipated, &three.ledger.viscous_dissipated, sizeof(double)), 0);
 }
 
 // Three ranges: a middle range has boundary particles and outgoing pairs at once.

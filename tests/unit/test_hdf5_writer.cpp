@@ -120,7 +120,7 @@ TEST(Hdf5Writer, AnHdf5FailureIsAnErrorNamingTheFileNotAnAbort) {
 }
 
 TEST(Hdf5Writer, EveryRecordedCurveHasAUnitPerColumn) {
-  const Table scene = scene_table({0, 3}, 2);
+  const Table scene = scene_table({0, 3}, 2, ContactModel{});
   ASSERT_EQ(scene.units.size(), scene.names.size());
   EXPECT_EQ(scene.units[2], "m");       // p0_x
   EXPECT_EQ(scene.units[5], "m/s");     // p0_vx

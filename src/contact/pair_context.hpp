@@ -1,0 +1,35 @@
+// What every contact-law slot may read about a pair besides its own state: the pair's
+// parameters and bodies (PairContext) and the step's contact kinematics (ContactKinematics).
+// Geometry is computed once per contact by the caller (engine/pair_force.hpp,
+// engine/wall_pair_force.hpp, engine/generic_pair_force.hpp), as in YADE's geometry ->
+// physics -> law pipeline.
+#pragma once
+#include "core/materials.hpp"
+#include "core/types.hpp"
+
+namespace colza {
+
+// The pair, for the slots of the generic law (contact/generic_law.hpp). Sphere-wall: the
+// wall is body 1 and both radii are the sphere's, R* = R and m* = m (physics.md section 7).
+struct PairContext {
+  const PairParameters& q;  // Kn, Ks (N/m), mu (-), E*, G* (Pa)
+  double radius_1 = 0.0;    // R1 (m)
+  double radius_2 = 0.0;    // R2 (m)
+  double effective_radius = 0.0;  // R* = R1 R2 / (R1 + R2) (m)
+  double effective_mass = 0.0;    // m* = m1 m2 / (m1 + m2) (kg)
+  double dt = 0.0;                // s
+  bool with_wall = false;
+};
+
+struct ContactKinematics {
+  Vec3 normal;           // unit normal n from body 1 to body 2
+  double overlap;        // un = R1 + R2 - |x2 - x1| (sphere-wall: R - distance), > 0 touching (m)
+  Vec3 shear_increment;  // dus = (vr - (vr.n) n) dt, vr = velocity of 2 relative to 1 at c (m)
+  double twist_angle;    // dt/2 (w1 + w2) . n_old (rad): spin of the pair about the PREVIOUS normal
+                         // (YADE ScGeom::precompute computes it before updating the normal)
+  // Read by the generic law's slots only (the baseline's paths leave them zero):
+  double normal_velocity = 0.0;       // vn = vr . n (m/s), approach negative
+  Vec3 rotation_increment = Vec3::Zero();  // (w2 - w1) dt (rad), relative rotation of the step
+};
+
+}  // namespace colza
