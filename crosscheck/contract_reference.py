@@ -4,7 +4,7 @@
 # YADE series (yade-scripts/run_scene.py) follows the contract, and how far a slip in the
 # contract would move a scene (--variant). crosscheck/YADE_MECHANISMS.md has the results.
 #
-#   python3 yade-scripts/contract_reference.py SCENE.toml YADE_SERIES.csv [--variant NAME]
+#   python3 crosscheck/contract_reference.py SCENE.toml YADE_SERIES.csv [--variant NAME]
 #
 # Prints, per recorded particle and quantity, max |reference - YADE| and the crosscheck micro
 # metric (divided by max(max |reference signal|, floor), positions as displacements). Only the
