@@ -45,6 +45,18 @@
 #                    geom.facetCylinder is not used: a polygon of triangles changes the
 #                    surface by Rc (1/cos(pi/N) - 1) and gives spheres extra edge contacts at
 #                    every facet edge under their footprint.
+#   * rolling resistance (contact.rolling = "elastic_plastic", physics.md 7.1, form "yade", not
+#     at walls): the same per-radius CohFrictMat with momentRotationLaw = True, alphaKr = beta
+#     (the Ip2's harmonic mean of two equal values: kr = beta Ks R1 R2 with the exact contact
+#     Ks), etaRoll = mu_r (maxRollPl = min(etaRoll R1, etaRoll R2)), alphaKtw = 0 (no twist
+#     moment), etaTwist = -1; the Law2 with useIncrementalForm = always_use_moment_law = True.
+#   * Hertz-Mindlin (contact.normal = "hertz", tangential = "mindlin", physics.md 7.2):
+#     FrictMat(young = E, poisson = nu), Ig2_Sphere_Sphere_ScGeom(avoidGranularRatcheting=False),
+#     Ip2_FrictMat_FrictMat_MindlinPhys (no damping, no adhesion), Law2_ScGeom_MindlinPhys_Mindlin;
+#     sphere-sphere only (YADE gives a wall the sphere's radius: R* = R/2, colza R).
+#   * Refused, with a message: viscous contact damping, walton_braun, load_induced bonds,
+#     hertz with linear shear or walls or bonds or rolling, rolling in the "pfc" form, at
+#     walls or with bonds (crosscheck/YADE_MECHANISMS.md says why).
 #   * NewtonIntegrator(damping=alpha, gravity=g) is colza's damping_form = "yade"; fixed O.dt.
 #   * The recorder runs in a PyRunner placed after InteractionLoop and before
 #     NewtonIntegrator: it sees x(t_n), v(t_n - dt/2) and the contact forces of step n,
@@ -86,6 +98,13 @@ AVOID_SELF = 2 | 8
 
 class ConfigError(Exception):
     pass
+
+
+# Ig2_Box_Sphere_ScGeom (and Ig2_Wall_Sphere_ScGeom unless hertzian) give a wall the sphere's
+# radius, so Ip2_FrictMat_FrictMat_MindlinPhys's R* = R1 R2 / (R1 + R2) is R/2 at a wall,
+# where physics.md 7.2 (and colza) take R.
+HERTZ_WALLS = ('contact.normal = "hertz" with walls: YADE gives a wall the sphere\'s radius '
+               "(R* = R/2 where colza has R* = R); Hertz-Mindlin is cross-checked between spheres only")
 
 
 # ---------------------------------------------------------------------------------------
@@ -130,12 +149,17 @@ def read_config(path, scenario):
         "friction": float(p.get("friction", 0.20)),
         "diameter_min": float(p.get("diameter_min", 6e-3)),
         "diameter_max": float(p.get("diameter_max", 7e-3)),
+        # Hertz-Mindlin (physics.md 7.2); None when absent (read_contact_model requires them)
+        "young_modulus": _optional_float(p, "young_modulus"),
+        "poisson_ratio": _optional_float(p, "poisson_ratio"),
     }
     w = doc.get("wall", {})
     c["wall"] = {
         "normal_stiffness": float(w.get("normal_stiffness", 4000e3)),
         "shear_stiffness": float(w.get("shear_stiffness", 1000e3)),
         "friction": float(w.get("friction", 0.23)),
+        "young_modulus": _optional_float(w, "young_modulus"),
+        "poisson_ratio": _optional_float(w, "poisson_ratio"),
     }
     k = doc.get("contact", {})
     bond = k.get("bond", "none")
@@ -145,16 +169,15 @@ def read_config(path, scenario):
         "wall_friction": k.get("wall_friction", "own"),
         "normal": k.get("normal", "linear"),
         "tangential": k.get("tangential", "coulomb"),
+        "damping": k.get("damping", "none"),
+        "rolling": k.get("rolling", "none"),
         "bond": bond,
         "bond_install": "never" if bond == "none" else k.get("bond_install", "before_loading"),
         "bond_gap": float(k.get("bond_gap", 0.0)),
         "normal_strength": float(cb.get("normal_strength", 0.0)),
         "shear_strength": float(cb.get("shear_strength", 0.0)),
     }
-    if c["contact"]["normal"] != "linear" or c["contact"]["tangential"] != "coulomb":
-        raise ConfigError("the YADE cross-check knows only normal = linear, tangential = coulomb")
-    if bond not in ("none", "contact_bond"):
-        raise ConfigError(f"unknown bond {bond}")
+    read_contact_model(c, k)
     i = doc.get("integration", {})
     ts = i.get("time_step", "auto")
     c["integration"] = {
@@ -214,7 +237,83 @@ def read_config(path, scenario):
         for wt in s.get("walls", []):
             scene["walls"].append(read_wall(wt))
         c["scene"] = scene
+    if c["contact"]["hertz"] and (scenario == "oedometer" or c["scene"]["walls"]):
+        raise ConfigError(HERTZ_WALLS)
     return c
+
+
+def _optional_float(table, key):
+    v = table.get(key)
+    return None if v is None else float(v)
+
+
+def read_contact_model(c, k):
+    """The contact-law slots YADE can compute as colza does (physics.md section 7,
+    crosscheck/YADE_MECHANISMS.md); every other choice is refused, not approximated.
+
+      normal/tangential  linear/coulomb  CohFrict law (section 6)
+                         hertz/mindlin   Ip2_FrictMat_FrictMat_MindlinPhys +
+                                         Law2_ScGeom_MindlinPhys_Mindlin, sphere-sphere only
+      rolling            elastic_plastic CohFrict law with momentRotationLaw, form "yade",
+                                         not at walls, linear law, no bonds
+    """
+    ct = c["contact"]
+    normal, tangential = ct["normal"], ct["tangential"]
+    if (normal, tangential) not in (("linear", "coulomb"), ("hertz", "mindlin")):
+        if normal == "walton_braun":
+            raise ConfigError('contact.normal = "walton_braun": the YADE cross-check has no elasto-plastic '
+                              'normal law (not mapped to any YADE law)')
+        raise ConfigError(f'contact.normal = "{normal}" with contact.tangential = "{tangential}": the YADE '
+                          'cross-check knows only linear + coulomb (CohFrict law) and hertz + mindlin '
+                          '(Law2_ScGeom_MindlinPhys_Mindlin)')
+    if ct["damping"] != "none":
+        raise ConfigError(f'contact.damping = "{ct["damping"]}": the YADE cross-check has no viscous contact '
+                          'damping (not mapped; only "none")')
+    if ct["bond"] not in ("none", "contact_bond"):
+        raise ConfigError(f'contact.bond = "{ct["bond"]}": the YADE cross-check knows only "none" and '
+                          '"contact_bond" (load_induced is not mapped)')
+    ct["hertz"] = normal == "hertz"
+    if ct["hertz"]:
+        part = c["particle"]
+        for key in ("young_modulus", "poisson_ratio"):
+            if part[key] is None:
+                raise ConfigError(f"contact.normal = \"hertz\" needs particle.{key} given explicitly "
+                                  "(the YADE cross-check does not guess colza's default)")
+        if part["young_modulus"] <= 0.0 or not (-1.0 < part["poisson_ratio"] <= 0.5):
+            raise ConfigError("particle.young_modulus must be > 0 and particle.poisson_ratio in (-1, 0.5]")
+        if ct["bond"] != "none":
+            raise ConfigError('contact.normal = "hertz" with a bond: YADE\'s Mindlin law has no bonds')
+    rolling = ct["rolling"]
+    ct["rolling_enabled"] = False
+    if rolling == "none":
+        return
+    if rolling != "elastic_plastic":
+        raise ConfigError(f'unknown contact.rolling = "{rolling}"')
+    ep = k.get("elastic_plastic", {})
+    form = ep.get("form", "yade")
+    at_walls = ep.get("at_walls", False)
+    if form != "yade":
+        raise ConfigError(f'contact.elastic_plastic.form = "{form}": YADE\'s CohFrict law computes only the '
+                          '"yade" form (kr = beta Ks R1 R2, cap mu_r min(R1, R2) Fn); "pfc" (R*) is not mapped')
+    if at_walls:
+        raise ConfigError("contact.elastic_plastic.at_walls = true: YADE's sphere-wall law "
+                          "(Law2_ScGeom_FrictPhys_CundallStrack) has no rolling moment")
+    if ct["hertz"]:
+        raise ConfigError('contact.rolling = "elastic_plastic" with contact.normal = "hertz": not mapped '
+                          "(YADE's Mindlin law has its own rolling moment, krot constant and cap eta (R1 + R2)/2 |Fn|)")
+    if ct["bond"] != "none":
+        raise ConfigError('contact.rolling = "elastic_plastic" with a bond: not mapped (YADE caps the moment of a '
+                          "bonded contact in tension at etaRoll min(R) |Fn|, colza at mu_r min(R) max(Fn, 0) = 0)")
+    for key in ("stiffness_factor", "friction"):
+        if key not in ep:
+            raise ConfigError(f"contact.rolling = \"elastic_plastic\" needs contact.elastic_plastic.{key} given "
+                              "explicitly (the YADE cross-check does not guess colza's default)")
+    beta, mu_r = float(ep["stiffness_factor"]), float(ep["friction"])
+    if beta <= 0.0 or mu_r < 0.0:
+        raise ConfigError("contact.elastic_plastic.stiffness_factor must be > 0 and friction >= 0")
+    ct["rolling_enabled"] = True
+    ct["rolling_stiffness_factor"] = beta
+    ct["rolling_friction"] = mu_r
 
 
 def read_wall(t):
@@ -287,10 +386,32 @@ class Model:
     def material_for(self, radius):
         m = self.materials.get(radius)
         if m is None:
-            m = O.materials.append(CohFrictMat(
-                young=self.kn_pp / radius, poisson=self.ks_pp / self.kn_pp, density=self.density,
-                frictionAngle=math.atan(self.mu_pp), isCohesive=True, momentRotationLaw=False,
-                alphaKr=0.0, alphaKtw=0.0, etaRoll=-1.0, etaTwist=-1.0, fragile=True))
+            ct = self.c["contact"]
+            if ct["hertz"]:
+                # Ip2_FrictMat_FrictMat_MindlinPhys takes Young's modulus and Poisson's ratio as
+                # they are (E*, G* of physics.md 7.2) and the radii from the geometry: one
+                # material would do, one per radius keeps the bookkeeping of the linear law.
+                part = self.c["particle"]
+                m = O.materials.append(FrictMat(
+                    young=part["young_modulus"], poisson=part["poisson_ratio"], density=self.density,
+                    frictionAngle=math.atan(self.mu_pp)))
+            elif ct["rolling_enabled"]:
+                # Rolling resistance (physics.md 7.1, form "yade"): the Ip2 makes
+                # kr = R1 R2 Ks alphaKr with alphaKr the harmonic mean of the two materials'
+                # values (= beta for equal values) and Ks the contact Ks (young/poisson below),
+                # and maxRollPl = min(etaRoll R1, etaRoll R2) = mu_r min(R1, R2); the Law2 caps
+                # |Mr| at maxRollPl |Fn|. alphaKtw = 0: no twist moment (ktw = 0); etaTwist < 0:
+                # no twist cap.
+                m = O.materials.append(CohFrictMat(
+                    young=self.kn_pp / radius, poisson=self.ks_pp / self.kn_pp, density=self.density,
+                    frictionAngle=math.atan(self.mu_pp), isCohesive=True, momentRotationLaw=True,
+                    alphaKr=ct["rolling_stiffness_factor"], alphaKtw=0.0, etaRoll=ct["rolling_friction"],
+                    etaTwist=-1.0, fragile=True))
+            else:
+                m = O.materials.append(CohFrictMat(
+                    young=self.kn_pp / radius, poisson=self.ks_pp / self.kn_pp, density=self.density,
+                    frictionAngle=math.atan(self.mu_pp), isCohesive=True, momentRotationLaw=False,
+                    alphaKr=0.0, alphaKtw=0.0, etaRoll=-1.0, etaTwist=-1.0, fragile=True))
             self.materials[radius] = m
         return m
 
@@ -323,6 +444,8 @@ class Model:
         return O.bodies.append(b)
 
     def add_wall(self, w):
+        if self.c["contact"]["hertz"]:
+            fail(HERTZ_WALLS)  # read_config refuses a scene's or the oedometer's; this, the shear box's
         if w["shape"] == "plane":
             n = w["normal"]
             # any unit vector perpendicular to n; exact for axis-aligned planes
@@ -527,19 +650,34 @@ class Model:
         engines = [ForceResetter()]
         if self.patch_walls:
             engines.append(PyRunner(command="MODEL.update_patches()", iterPeriod=1, initRun=True, label="patches"))
-        engines += [
-            InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Box_Aabb()], avoidSelfInteractionMask=AVOID_SELF,
-                                  label="collider"),
-            InteractionLoop(
+        if ct["hertz"]:
+            # Sphere-sphere only (add_wall refuses walls). ScGeom with colza's kinematics
+            # (avoidGranularRatcheting=False: lever arms c - x_i); no viscous damping (betan,
+            # betas unset = 0), no adhesion, no moment.
+            loop = InteractionLoop(
+                [Ig2_Sphere_Sphere_ScGeom(avoidGranularRatcheting=False)],
+                [Ip2_FrictMat_FrictMat_MindlinPhys()],
+                [Law2_ScGeom_MindlinPhys_Mindlin(includeAdhesion=False, includeMoment=False, calcEnergy=False,
+                                                 label="law_pp")],
+                label="loop")
+        else:
+            # Rolling resistance: the incremental moment (Mr carried into the new frame like the
+            # shear force, then -kr w_b dt) at every contact, bonded or not.
+            rolling = ct["rolling_enabled"]
+            loop = InteractionLoop(
                 [Ig2_Sphere_Sphere_ScGeom6D(avoidGranularRatcheting=False), Ig2_Box_Sphere_ScGeom()],
                 [ip2_coh,
                  Ip2_FrictMat_FrictMat_FrictPhys(kn=MatchMaker(algo="val", val=self.kn_pw),
                                                  ks=MatchMaker(algo="val", val=self.ks_pw),
                                                  frictAngle=MatchMaker(algo="val", val=math.atan(self.mu_pw)))],
-                [Law2_ScGeom6D_CohFrictPhys_CohesionMoment(useIncrementalForm=False, always_use_moment_law=False,
+                [Law2_ScGeom6D_CohFrictPhys_CohesionMoment(useIncrementalForm=rolling, always_use_moment_law=rolling,
                                                            label="law_pp"),
                  Law2_ScGeom_FrictPhys_CundallStrack(label="law_pw")],
-                label="loop"),
+                label="loop")
+        engines += [
+            InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Box_Aabb()], avoidSelfInteractionMask=AVOID_SELF,
+                                  label="collider"),
+            loop,
         ]
         if on_new:
             engines.append(PyRunner(command="MODEL.fix_new_bonds()", iterPeriod=1, initRun=True, label="bondfix"))

@@ -9,7 +9,9 @@
 # pK_w{x,y,z}, pK_f{x,y,z} and pK_t{x,y,z} (contact force and torque of step n, no gravity);
 # per wall w: wW_f{x,y,z} (force exerted by the particles on the wall) and wW_{x,y,z} (its
 # origin); then contacts, bonds and the energies. YADE has no equivalent of colza's
-# damping_dissipated, bond_break_lost, shear_break_released and wall_work bookkeeping: those columns are NaN.
+# damping_dissipated, bond_break_lost, shear_break_released and wall_work bookkeeping: those columns are NaN;
+# with Hertz-Mindlin slip_dissipated is NaN too (YADE's frictionDissipation is another formula),
+# and the rolling moment's stored energy is in no column.
 # OUTDIR/summary.json holds the wall time and the particle-steps per second.
 import builtins
 import math
@@ -85,9 +87,17 @@ def main(argv):
             if not inter.isReal:
                 continue
             ph = inter.phys
-            en += 0.5 * ph.normalForce.squaredNorm() / ph.kn
-            es += 0.5 * ph.shearForce.squaredNorm() / ph.ks
-        slip = sum(law.plasticDissipation() for law in laws)
+            if isinstance(ph, MindlinPhys):
+                # Hertz: 8/15 E* sqrt(R*) un^(5/2) = 2/5 Fn un (ph.kn is the tangent stiffness);
+                # shear: |Fs|^2 / (2 kt), kt the tangent 8 G* sqrt(R* un)
+                en += 0.4 * ph.normalForce.norm() * inter.geom.penetrationDepth
+                if ph.ks > 0.0:
+                    es += 0.5 * ph.shearForce.squaredNorm() / ph.ks
+            else:
+                en += 0.5 * ph.normalForce.squaredNorm() / ph.kn
+                es += 0.5 * ph.shearForce.squaredNorm() / ph.ks
+        # Mindlin's frictionDissipation is another formula than colza's: NaN there
+        slip = math.nan if c["contact"]["hertz"] else sum(law.plasticDissipation() for law in laws)
         row += [contacts, bonds, kin, grav, en, es, slip, math.nan, math.nan, math.nan, math.nan]
         rows.append(row)
 
@@ -95,8 +105,9 @@ def main(argv):
     m.build_engines("RECORD()")
     loop = [e for e in O.engines if isinstance(e, InteractionLoop)][0]
     for law in loop.lawDispatcher.functors:
-        law.traceEnergy = True  # slip dissipation, same bookkeeping as colza's slip_dissipated
         laws.append(law)
+        if not isinstance(law, Law2_ScGeom_MindlinPhys_Mindlin):
+            law.traceEnergy = True  # slip dissipation, same bookkeeping as colza's slip_dissipated
     installed = m.install_bonds_if("before_loading", "after_settling")
 
     O.timingEnabled = True
