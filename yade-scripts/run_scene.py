@@ -10,8 +10,10 @@
 # per wall w: wW_f{x,y,z} (force exerted by the particles on the wall) and wW_{x,y,z} (its
 # origin); then contacts, bonds and the energies. YADE has no equivalent of colza's
 # damping_dissipated, bond_break_lost, shear_break_released and wall_work bookkeeping: those columns are NaN;
-# with Hertz-Mindlin slip_dissipated is NaN too (YADE's frictionDissipation is another formula),
-# and the rolling moment's stored energy is in no column.
+# with Hertz-Mindlin slip_dissipated is NaN too (YADE's frictionDissipation is another formula).
+# The mechanisms' own columns of colza (engine/energy.hpp: elastic_rolling_energy after
+# elastic_shear_energy, rolling_dissipated and shear_stiffness_change after wall_work, when
+# rolling resistance or the Mindlin spring is on) are written as NaN.
 # OUTDIR/summary.json holds the wall time and the particle-steps per second.
 import builtins
 import math
@@ -23,7 +25,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))  # yade -x: ar
 import colza_yade as cy  # noqa: E402
 
 
-def scene_columns(particles, walls):
+def scene_columns(particles, walls, rolling=False, mindlin=False):
     names = ["step", "time"]
     for k in particles:
         for q in ("", "v", "w", "f", "t"):
@@ -34,7 +36,14 @@ def scene_columns(particles, walls):
             for a in ("x", "y", "z"):
                 names.append(f"w{w}_{q}{a}")
     names += ["contacts", "bonds", "kinetic_energy", "gravitational_energy", "elastic_normal_energy",
-              "elastic_shear_energy", "slip_dissipated", "damping_dissipated", "bond_break_lost", "shear_break_released", "wall_work"]
+              "elastic_shear_energy"]
+    if rolling:
+        names.append("elastic_rolling_energy")
+    names += ["slip_dissipated", "damping_dissipated", "bond_break_lost", "shear_break_released", "wall_work"]
+    if rolling:
+        names.append("rolling_dissipated")
+    if mindlin:
+        names.append("shear_stiffness_change")
     return names
 
 
@@ -58,7 +67,9 @@ def main(argv):
     interval = s["record_interval"]
     rec = s["record_particles"]
     rec_ids = [m.particles[k] for k in rec]
-    names = scene_columns(rec, len(m.walls))
+    rolling = c["contact"]["rolling"] != "none"
+    mindlin = c["contact"]["hertz"]
+    names = scene_columns(rec, len(m.walls), rolling, mindlin)
     rows = []
     g = c["integration"]["gravity"]
     laws = []
@@ -98,7 +109,9 @@ def main(argv):
                 es += 0.5 * ph.shearForce.squaredNorm() / ph.ks
         # Mindlin's frictionDissipation is another formula than colza's: NaN there
         slip = math.nan if c["contact"]["hertz"] else sum(law.plasticDissipation() for law in laws)
-        row += [contacts, bonds, kin, grav, en, es, slip, math.nan, math.nan, math.nan, math.nan]
+        row += [contacts, bonds, kin, grav, en, es] + ([math.nan] if rolling else [])
+        row += [slip, math.nan, math.nan, math.nan, math.nan]
+        row += ([math.nan] if rolling else []) + ([math.nan] if mindlin else [])
         rows.append(row)
 
     builtins.RECORD = record
