@@ -1,6 +1,7 @@
 // One step of the contact law for one contact, any slot combination (the generic tier;
 // physics.md section 2 steps 1-6 with the mechanisms of section 7). Each slot is chosen at
-// run time (std::visit per contact), so combinations add no compiled copies of the loops.
+// run time per contact (visit_slot, contact/slots.hpp), so combinations add no compiled
+// copies of the loops.
 // With the baseline's slots it performs the baseline's IEEE operations in the baseline's
 // order (contact/contact_law.hpp), so the two tiers give the same bits
 // (ForcePaths.TheGenericTierGivesTheBaselineBits).
@@ -53,7 +54,10 @@ inline ContactEnergy stored_contact_energy(const ContactModel& m, const SlotStat
         overlap = normal.overlap(c, fn, state + layout.normal);
       },
       m.normal);
-  const double kt = std::visit([&](const auto& t) { return t.stiffness(c, overlap); }, m.tangential);
+  // Mindlin's spring: the kt of its last step (kept in its state), else the law's at the overlap.
+  const double kept_kt = std::holds_alternative<MindlinTangential>(m.tangential) ? state[layout.tangential] : 0.0;
+  const double kt =
+      kept_kt > 0.0 ? kept_kt : visit_slot(m.tangential, [&](const auto& t) { return t.stiffness(c, overlap); });
   e.shear = shear_spring_energy(kt, h.shear_force);
   if (const auto* rolling = std::get_if<ElasticPlasticRolling>(&m.rolling); rolling && rolling->acts(c)) {
     const double* mr = state + layout.rolling;
@@ -79,15 +83,10 @@ inline ContactOutcome evaluate_contact_generic(const ContactModel& m, const Slot
     fresh = true;
     out.event = ContactEvent::kCreated;
   }
-  // The Mindlin spring's stiffness at the previous step's overlap, read from its normal
-  // force before the normal law updates its state (the stiffness-change channel below).
+  // The Mindlin spring's stiffness of the previous step (its state; the stiffness-change
+  // channel below).
   const bool stiffness_varies = std::holds_alternative<MindlinTangential>(m.tangential);
-  double kt_previous = 0.0;
-  if (stiffness_varies && !fresh) {
-    const double overlap_previous = std::visit(
-        [&](const auto& n) { return n.overlap(c, h.normal_force, state + layout.normal); }, m.normal);
-    kt_previous = std::get<MindlinTangential>(m.tangential).stiffness(c, overlap_previous);
-  }
+  const double kt_previous = stiffness_varies ? state[layout.tangential] : 0.0;
   if (k.overlap < 0.0 && !h.bonded) {  // step 4: unbonded contact without overlap is removed
     h.reset();
     clear_slot_state(state, layout.stride);
@@ -96,7 +95,7 @@ inline ContactOutcome evaluate_contact_generic(const ContactModel& m, const Slot
   }
   // Step 1: normal force (also tension while bonded); a load-induced bond forms here.
   const NormalResult normal =
-      std::visit([&](const auto& n) { return n.force(c, k.overlap, state + layout.normal, h.bonded != 0); }, m.normal);
+      visit_slot(m.normal, [&](const auto& n) { return n.force(c, k.overlap, state + layout.normal, h.bonded != 0); });
   const double fn = normal.force;
   out.plastic_dissipation = normal.dissipated;
   if (const auto* load_bond = std::get_if<LoadInducedBond>(&m.bond); load_bond && !c.with_wall)
@@ -111,12 +110,14 @@ inline ContactOutcome evaluate_contact_generic(const ContactModel& m, const Slot
   }
   const Vec3 fs_carried = fs;
   // Step 3: trial shear force from the shear displacement increment.
-  const double kt = std::visit([&](const auto& t) { return t.stiffness(c, k.overlap); }, m.tangential);
+  const double kt = visit_slot(m.tangential, [&](const auto& t) { return t.stiffness(c, k.overlap); });
   // Mindlin's incremental spring has no potential: at a fixed force its energy 1/2 |Fs|^2 / kt
   // changes with kt (the overlap), by 1/2 |Fs|^2 (1/kt - 1/kt_prev) (J), work no force did.
   // Booked (with the opposite sign) so that the balance states it.
-  if (stiffness_varies && !fresh)
-    out.stiffness_change = -0.5 * fs_carried.squaredNorm() * (1.0 / kt - 1.0 / kt_previous);
+  if (stiffness_varies) {
+    if (!fresh) out.stiffness_change = -0.5 * fs_carried.squaredNorm() * (1.0 / kt - 1.0 / kt_previous);
+    state[layout.tangential] = kt;
+  }
   fs -= kt * k.shear_increment;
   // Rolling moment (physics.md 7.1): carried like Fs, incremented by the bending rotation, capped.
   const auto* rolling = std::get_if<ElasticPlasticRolling>(&m.rolling);
@@ -136,7 +137,7 @@ inline ContactOutcome evaluate_contact_generic(const ContactModel& m, const Slot
   }
   // Steps 4-5: bond or friction limit.
   const BondState bond_state =
-      std::visit([&](const auto& b) { return detail::apply_generic_bond(b, fn, fs, h, state + layout.bond); }, m.bond);
+      visit_slot(m.bond, [&](const auto& b) { return detail::apply_generic_bond(b, fn, fs, h, state + layout.bond); });
   // A tension break removes the contact (section 2 step 5) when the spheres no longer
   // overlap, which for the linear and Hertz laws is the only case (tension means un < 0).
   // An elasto-plastic contact is in tension already below its plastic overlap d0 > 0: its
@@ -169,14 +170,13 @@ inline ContactOutcome evaluate_contact_generic(const ContactModel& m, const Slot
     if (fn < 0.0) {
       fn_applied = 0.0;
       out.normal_energy_lost =
-          std::visit([&](const auto& n) { return n.energy(c, fn, state + layout.normal); }, m.normal);
+          visit_slot(m.normal, [&](const auto& n) { return n.energy(c, fn, state + layout.normal); });
     }
   }
   // Dashpots (physics.md 7.3): not stored in the history; their work is the viscous channel.
   Vec3 fs_applied = fs;
   if (const auto* viscous = std::get_if<ViscousDamping>(&m.damping)) {
-    const double kn = std::visit([&](const auto& n) { return n.tangent_stiffness(c, k.overlap, state + layout.normal); },
-                                 m.normal);
+    const double kn = visit_slot(m.normal, [&](const auto& n) { return n.tangent_stiffness(c, k.overlap, state + layout.normal); });
     const double damped = fn_applied - viscous->normal_coefficient(c, kn) * k.normal_velocity;
     const double fn_damped = h.bonded ? damped : std::max(damped, 0.0);
     const double dt = c.dt;

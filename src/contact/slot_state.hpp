@@ -14,24 +14,27 @@ namespace colza {
 struct SlotStateLayout {
   std::size_t stride = 0;   // doubles per pair
   std::size_t normal = 0;   // offset of the normal slot's state
+  std::size_t tangential = 0;  // offset of the tangential slot's state
   std::size_t rolling = 0;  // offset of the rolling slot's state
   std::size_t bond = 0;     // offset of the bond slot's state
   std::vector<double> swap_sign;  // per double: +1 or -1, its factor when the bodies swap
 
   bool operator==(const SlotStateLayout& o) const {
-    return stride == o.stride && normal == o.normal && rolling == o.rolling && bond == o.bond &&
+    return stride == o.stride && normal == o.normal && tangential == o.tangential && rolling == o.rolling &&
+           bond == o.bond &&
            swap_sign == o.swap_sign;
   }
 };
 
-// Rows laid out normal | rolling | bond; the rolling moment flips sign on a swap.
+// Rows laid out normal | tangential | rolling | bond; the rolling moment flips sign on a swap.
 inline SlotStateLayout slot_state_layout(const ContactModel& m) {
   SlotStateLayout l;
   const auto doubles = [](const auto& slot) {
     return std::visit([](const auto& impl) { return static_cast<std::size_t>(impl.kStateDoubles); }, slot);
   };
   l.normal = 0;
-  l.rolling = l.normal + doubles(m.normal);
+  l.tangential = l.normal + doubles(m.normal);
+  l.rolling = l.tangential + doubles(m.tangential);
   l.bond = l.rolling + doubles(m.rolling);
   l.stride = l.bond + doubles(m.bond);
   l.swap_sign.assign(l.stride, 1.0);

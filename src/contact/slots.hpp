@@ -39,6 +39,23 @@ struct ContactModel {
   double bond_gap = 0.0;  // bonds also join pairs whose gap (-un) is at most this (m)
 };
 
+// Calls f with the implementation a slot holds: a chain of index tests, which the compiler
+// inlines (std::visit may go through a table of function pointers), for the generic law's
+// per-contact dispatch.
+template <std::size_t I, class F, class... Impl>
+[[gnu::always_inline]] inline decltype(auto) visit_slot_from(const std::variant<Impl...>& slot, F& f) {
+  if constexpr (I + 1 == sizeof...(Impl)) {
+    return f(*std::get_if<I>(&slot));
+  } else {
+    if (slot.index() == I) return f(*std::get_if<I>(&slot));
+    return visit_slot_from<I + 1>(slot, f);
+  }
+}
+
+template <class F, class... Impl>
+[[gnu::always_inline]] inline decltype(auto) visit_slot(const std::variant<Impl...>& slot, F&& f) {
+  return visit_slot_from<0>(slot, f);
+}
 // The baseline of physics.md section 2, which the batched kernels compute: linear normal,
 // Coulomb tangential, no contact damping, no rolling resistance, no bond or the contact bond.
 inline bool is_baseline(const ContactModel& m) {

@@ -23,6 +23,7 @@ inline double coulomb_cap(double friction, double kt, double fn, Vec3& fs) {
 // |Fs| <= mu max(Fn, 0) (Cundall & Strack 1979; PFC3D linear model; YADE CundallStrack).
 struct CoulombTangential {
   static constexpr const char* kName = "coulomb";
+  static constexpr int kStateDoubles = 0;
   void increment(const PairParameters& p, Vec3& fs, const Vec3& shear_increment) const {
     fs -= p.ks * shear_increment;
   }
@@ -54,9 +55,11 @@ struct CoulombTangential {
 // No-slip Mindlin shear spring (Mindlin 1949; YADE Law2_ScGeom_MindlinPhys_Mindlin; LIGGGHTS
 // tangential history with Hertz): kt = 8 G* sqrt(R* un) (N/m), incremental Fs <- Fs - kt dus
 // with kt at this step's overlap, Coulomb cap as the linear law's (physics.md 7.2). Stored
-// energy |Fs|^2 / (2 kt) (J). A bonded pair in tension (un <= 0) keeps the linear Ks.
+// energy |Fs|^2 / (2 kt) (J). A bonded pair in tension (un <= 0) keeps the linear Ks. State:
+// the last step's kt (N/m; unchanged when the bodies swap), for the energy and its change.
 struct MindlinTangential {
   static constexpr const char* kName = "mindlin";
+  static constexpr int kStateDoubles = 1;
   double stiffness(const PairContext& c, double overlap) const {
     if (overlap <= 0.0) return c.q.ks;
     return 8.0 * c.q.effective_shear * std::sqrt(c.effective_radius * overlap);

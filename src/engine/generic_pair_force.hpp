@@ -11,6 +11,20 @@
 
 namespace colza::detail {
 
+// A contact's history and slot-state row as they were before the law ran (the longest row:
+// Walton-Braun, Mindlin, rolling and load-induced cohesion, 7 doubles).
+struct SlotRow {
+  static constexpr std::size_t kMaxStride = 8;
+  ContactHistory history;
+  double state[kMaxStride] = {};
+};
+inline SlotRow save_row(const ContactHistory& h, const double* state, std::size_t stride) {
+  SlotRow r;
+  r.history = h;
+  for (std::size_t d = 0; d < stride; ++d) r.state[d] = state[d];
+  return r;
+}
+
 // The generic law's dissipation channels of one outcome go to the sink.
 template <class Sink>
 inline void book_mechanisms(const ContactOutcome& out, Sink& sink) {
@@ -38,12 +52,17 @@ inline bool generic_particle_pair_force(const ContactModel& model, const SlotSta
   const PairParameters& q = pairs.particle_particle(p.material[i], p.material[j]);
   const double mi = p.mass[i], mj = p.mass[j];
   const PairContext c{q, ri, rj, ri * rj / (ri + rj), mi * mj / (mi + mj), dt, false};
+  // The state before the law runs: its stored energy is lost if the contact vanishes this
+  // step (evaluated only then).
   const bool was_touching = h.touching != 0;
-  ContactEnergy before;
-  if (was_touching) before = stored_contact_energy(model, layout, c, h, state);
+  SlotRow saved;
+  if (was_touching) saved = save_row(h, state, layout.stride);
   const ContactOutcome out = evaluate_contact_generic(model, layout, c, k, h, state, bond_new_contacts);
   if (!out.carries_force) {
-    if (was_touching) sink.broken(before.normal + before.shear + before.rolling);
+    if (was_touching) {
+      const ContactEnergy before = stored_contact_energy(model, layout, c, saved.history, saved.state);
+      sink.broken(before.normal + before.shear + before.rolling);
+    }
     sink.event(out.event);
     return false;
   }
@@ -90,11 +109,12 @@ inline bool generic_wall_pair_force(const ContactModel& model, const SlotStateLa
   // A separation from a wall books nothing for linear springs (their last energy is
   // O((w dt)^2) and went into the motion); the Mindlin spring's |Fs|^2 / (2 kt), kt vanishing
   // with the overlap, is not small: it leaves with the contact (stiffness-change channel).
-  const bool mindlin = std::holds_alternative<MindlinTangential>(model.tangential);
-  const double shear_before = mindlin && h.touching ? stored_contact_energy(model, layout, c, h, state).shear : 0.0;
+  const bool mindlin = std::holds_alternative<MindlinTangential>(model.tangential) && h.touching;
+  SlotRow saved;
+  if (mindlin) saved = save_row(h, state, layout.stride);
   const ContactOutcome out = evaluate_contact_generic(model, layout, c, k, h, state, false);
   if (!out.carries_force) {
-    sink.stiffness_change(shear_before);
+    if (mindlin) sink.stiffness_change(stored_contact_energy(model, layout, c, saved.history, saved.state).shear);
     return false;
   }
   sink.slip(out.slip_dissipation);
