@@ -20,9 +20,12 @@
 //
 // Per branch:
 //   * the constrained tangent modulus at each named stress sigma*: M = d sigma_v / d eps, the
-//     slope of the least-squares line sigma_v(eps) through the branch's rows with
-//     |sigma_v - sigma*| <= w sigma* (w = modulus_window), at least 3 rows, and sigma* within
-//     the branch's stress range; K at sigma* = mean sigma_h / mean sigma_v over the same rows;
+//     slope of the least-squares line sigma_v(eps) through the contiguous rows with
+//     |sigma_v - sigma*| <= w sigma* (w = modulus_window) around the first row where the branch
+//     passes sigma* (a loading's first sigma_v >= sigma*, an unloading's first <= sigma*), at
+//     least 3 rows, sigma* within the branch's stress range (a branch that passes sigma* again,
+//     after a collapse, is read at its first passage); K at sigma* = mean sigma_h / mean
+//     sigma_v over the same rows;
 //   * the work per unit volume, W = integral sigma_v d eps (trapezoids over the rows; J/m^3,
 //     negative on unloading: the work the sample gives back);
 //   * K at the branch's last row.

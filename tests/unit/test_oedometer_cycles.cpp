@@ -156,3 +156,19 @@ TEST(OedometerCycles, MismatchedArraysAreRefused) {
   EXPECT_THROW(analyse_load_unload({0, 1e-3}, {0, 1}, {0}, {kArea, kH, kD}, {}), std::invalid_argument);
   EXPECT_THROW(analyse_load_unload({0, 1e-3}, {0, 1}, {}, {0.0, kH, kD}, {}), std::invalid_argument);
 }
+
+TEST(OedometerCycles, ABranchThatPassesTheStressTwiceIsReadAtItsFirstPassage) {
+  // One loading (travel always growing), rows every 1e-4 of strain: sigma = 5 MPa x eps up to
+  // 60 kPa (eps = 0.012), a collapse to 40 kPa in one row, then 20 MPa x (eps - 0.013) + 40 kPa
+  // up to 100 kPa. 50 kPa is passed at eps = 0.010 (slope 5 MPa) and again at 0.0135 (slope
+  // 20 MPa): the modulus is the first passage's, 5 MPa, from its 21 rows in 45..55 kPa (window
+  // 10.3 %), not a line through both passages.
+  std::vector<double> travel, force;
+  for (int k = 0; k <= 120; ++k) travel.push_back(k * 1e-4 * kH), force.push_back(5e6 * k * 1e-4 * kArea);
+  for (int k = 130; k <= 160; ++k) travel.push_back(k * 1e-4 * kH), force.push_back((40e3 + 20e6 * (k - 130) * 1e-4) * kArea);
+  const LoadUnloadAnalysis a = analyse_load_unload(travel, force, {}, {kArea, kH, kD}, settings({50e3}));
+  ASSERT_EQ(a.branches.size(), 1u);
+  ASSERT_EQ(a.branches[0].moduli.size(), 1u);
+  EXPECT_EQ(a.branches[0].moduli[0].points, 21u);
+  EXPECT_NEAR(a.branches[0].moduli[0].modulus, 5e6, 1e-9 * 5e6);
+}
