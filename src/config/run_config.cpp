@@ -98,6 +98,7 @@ OedometerSpec read_oedometer(const ConfigNode& t, const ParticleSpec& particle) 
                                     format_shortest(particle.diameter_max) + " m (lengths are in metres)");
   if (o.generation_height < o.cylinder_height) t.fail("generation_height", "must be at least oedometer.cylinder_height");
   o.packing_file = t.string("packing_file", "");
+  o.cycles = read_oedometer_cycles(t, kPi * 0.25 * o.cylinder_diameter * o.cylinder_diameter, o.stop_force);
   return o;
 }
 
