@@ -103,21 +103,12 @@ LoadUnloadAnalysis analyse_load_unload(const std::vector<double>& travel, const 
       if (target < lo || target > hi) continue;  // the branch does not pass through sigma*
       LocalModulus m;
       m.stress = target;
-      // The rows around where the branch first passes sigma*, as far as they stay in the
-      // window: a branch that passes sigma* again after a collapse (a small sample's force
-      // chains buckling) does not mix the two passages into one slope.
-      const auto in_window = [&](std::size_t i) {
-        return std::abs(sigma_v[i] - target) <= settings.modulus_window * target;
-      };
-      std::size_t cross = r.first;
-      while (cross < r.last && (b.loading ? sigma_v[cross] < target : sigma_v[cross] > target)) ++cross;
       std::vector<std::size_t> rows;
-      if (in_window(cross)) {
-        std::size_t lo = cross, hi = cross;
-        while (lo > r.first && in_window(lo - 1)) --lo;
-        while (hi < r.last && in_window(hi + 1)) ++hi;
-        for (std::size_t i = lo; i <= hi; ++i) rows.push_back(i);
-      }
+      for (std::size_t i = r.first; i <= r.last; ++i)
+        if (std::abs(sigma_v[i] - target) <= settings.modulus_window * target) {
+          if (rows.empty() || rows.back() + 1 != i) ++m.passages;  // a new run of rows in the window
+          rows.push_back(i);
+        }
       m.points = rows.size();
       if (!rows.empty()) {
         m.stress_low = m.stress_high = sigma_v[rows.front()];

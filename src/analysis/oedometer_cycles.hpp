@@ -20,12 +20,13 @@
 //
 // Per branch:
 //   * the constrained tangent modulus at each named stress sigma*: M = d sigma_v / d eps, the
-//     slope of the least-squares line sigma_v(eps) through the contiguous rows with
-//     |sigma_v - sigma*| <= w sigma* (w = modulus_window) around the first row where the branch
-//     passes sigma* (a loading's first sigma_v >= sigma*, an unloading's first <= sigma*), at
-//     least 3 rows, sigma* within the branch's stress range (a branch that passes sigma* again,
-//     after a collapse, is read at its first passage); K at sigma* = mean sigma_h / mean
-//     sigma_v over the same rows;
+//     slope of the least-squares line sigma_v(eps) through the branch's rows with
+//     |sigma_v - sigma*| <= w sigma* (w = modulus_window), at least 3 rows, sigma* within the
+//     branch's stress range; K at sigma* = mean sigma_h / mean sigma_v over the same rows.
+//     `passages` counts the separate runs of rows in the window: more than 1 when the branch
+//     leaves the window and comes back (a collapse that drops the stress below sigma* and a
+//     re-rise); the line then runs through all passages and M is no tangent (it can even be
+//     negative): read the curve there;
 //   * the work per unit volume, W = integral sigma_v d eps (trapezoids over the rows; J/m^3,
 //     negative on unloading: the work the sample gives back);
 //   * K at the branch's last row.
@@ -62,6 +63,7 @@ struct LocalModulus {
   double lateral_ratio = kNotAvailable;  // K over the window's rows; NaN without radial force
   double stress_low = 0.0, stress_high = 0.0;  // Pa, the rows' stress range actually used
   std::size_t points = 0;            // rows in the window
+  std::size_t passages = 0;          // separate runs of rows in the window (1 on a monotone branch)
 };
 
 struct CurveBranch {

@@ -23,6 +23,7 @@ nlohmann::json load_unload_json(const LoadUnloadAnalysis& a, const CycleAnalysis
                         {"modulus", number(m.modulus)},
                         {"lateral_ratio", number(m.lateral_ratio)},
                         {"points", m.points},
+                        {"passages", m.passages},
                         {"stress_range", {m.stress_low, m.stress_high}}});
     branches.push_back({{"kind", b.loading ? "loading" : "unloading"},
                         {"first_row", b.first_row},

@@ -12,7 +12,7 @@ namespace colza {
 
 // {"branches": [{kind, first_row, last_row, stress_start, stress_end, stress_extreme,
 //   strain_start, strain_end, work, lateral_ratio_end, moduli: [{stress, modulus,
-//   lateral_ratio, points, stress_range}]}], "cycles": [{loading_branch, unloading_branch,
+//   lateral_ratio, points, passages, stress_range}]}], "cycles": [{loading_branch, unloading_branch,
 //   loop_area, strain_at_turn, permanent_strain, rebound_strain}], "radial_force": bool,
 //   "modulus_window", "reversal_tolerance"}
 nlohmann::json load_unload_json(const LoadUnloadAnalysis& a, const CycleAnalysisSettings& settings);

@@ -112,6 +112,7 @@ TEST(OedometerCycles, ModuliPermanentStrainsLoopAreasOfAPiecewiseLinearCurve) {
     // unloadings (46..54: 5 rows), 1 kPa on the reloading (45..55: 11 rows).
     const std::size_t rows[4] = {21, 5, 11, 5};
     EXPECT_EQ(b.moduli[0].points, rows[k]) << k;
+    EXPECT_EQ(b.moduli[0].passages, 1u) << k;
     // K at 50 kPa: 0.4 on loading; on unloading the window's mean sigma_v is 50 kPa (rows
     // symmetric about it) and sigma_h is linear in sigma_v, so K = 0.1 + 30e3 / 50e3 = 0.7.
     EXPECT_NEAR(b.moduli[0].lateral_ratio, k % 2 == 0 ? 0.4 : 0.7, 1e-12) << k;
@@ -157,18 +158,25 @@ TEST(OedometerCycles, MismatchedArraysAreRefused) {
   EXPECT_THROW(analyse_load_unload({0, 1e-3}, {0, 1}, {}, {0.0, kH, kD}, {}), std::invalid_argument);
 }
 
-TEST(OedometerCycles, ABranchThatPassesTheStressTwiceIsReadAtItsFirstPassage) {
+TEST(OedometerCycles, ABranchThatPassesTheStressTwiceSaysSo) {
   // One loading (travel always growing), rows every 1e-4 of strain: sigma = 5 MPa x eps up to
-  // 60 kPa (eps = 0.012), a collapse to 40 kPa in one row, then 20 MPa x (eps - 0.013) + 40 kPa
-  // up to 100 kPa. 50 kPa is passed at eps = 0.010 (slope 5 MPa) and again at 0.0135 (slope
-  // 20 MPa): the modulus is the first passage's, 5 MPa, from its 21 rows in 45..55 kPa (window
-  // 10.3 %), not a line through both passages.
+  // 60 kPa (row 120, eps = 0.012), a collapse to 40 kPa (row 130), then 5 MPa x (eps - 0.005)
+  // up to 80 kPa (row 170). The 50 kPa window (44.85..55.15 kPa) holds rows 90..110 and
+  // 140..160: two passages of 21 rows, parallel segments of slope 5 MPa offset by 0.005 in
+  // strain at the same stresses. The least-squares line through both: the groups' mean
+  // stresses are equal, so the between-group part adds nothing to the covariance and
+  //   M = 5 MPa x W / (W + B),  W = 2 x 1e-8 x sum_{j=-10..10} j^2 = 1.54e-5,
+  //                             B = 42 x 0.0025^2 = 2.625e-4      -> M = 0.2771 MPa,
+  // no tangent: `passages` = 2 says so.
   std::vector<double> travel, force;
   for (int k = 0; k <= 120; ++k) travel.push_back(k * 1e-4 * kH), force.push_back(5e6 * k * 1e-4 * kArea);
-  for (int k = 130; k <= 160; ++k) travel.push_back(k * 1e-4 * kH), force.push_back((40e3 + 20e6 * (k - 130) * 1e-4) * kArea);
+  for (int k = 130; k <= 170; ++k) travel.push_back(k * 1e-4 * kH), force.push_back(5e6 * (k * 1e-4 - 0.005) * kArea);
   const LoadUnloadAnalysis a = analyse_load_unload(travel, force, {}, {kArea, kH, kD}, settings({50e3}));
   ASSERT_EQ(a.branches.size(), 1u);
   ASSERT_EQ(a.branches[0].moduli.size(), 1u);
-  EXPECT_EQ(a.branches[0].moduli[0].points, 21u);
-  EXPECT_NEAR(a.branches[0].moduli[0].modulus, 5e6, 1e-9 * 5e6);
+  const LocalModulus& m = a.branches[0].moduli[0];
+  EXPECT_EQ(m.points, 42u);
+  EXPECT_EQ(m.passages, 2u);
+  const double w = 2.0 * 1e-8 * 770.0, b = 42.0 * 0.0025 * 0.0025;
+  EXPECT_NEAR(m.modulus, 5e6 * w / (w + b), 1e-6 * 5e6 * w / (w + b));
 }
