@@ -89,9 +89,9 @@ int main(int argc, char** argv) {
 
   colza::RunOptions opt;
   CLI::App* run = app.add_subcommand("run", "run a scenario and write its results to --out");
-  run->add_option("scenario", opt.scenario, "oedometer | shear | shear-series | scene")
+  run->add_option("scenario", opt.scenario, "oedometer | shear | shear-series | repose | scene")
       ->required()
-      ->check(CLI::IsMember({"oedometer", "shear", "shear-series", "scene"}));
+      ->check(CLI::IsMember({"oedometer", "shear", "shear-series", "repose", "scene"}));
   run->add_option("--config", opt.config_path,
                   "TOML config (oedometer: default built-in = data/oedometer.toml; shear, shear-series and "
                   "scene need one, e.g. data/shear.toml)");

@@ -1,6 +1,7 @@
 #include "cli/run_commands.hpp"
 
 #include "cli/command_common.hpp"
+#include "cli/repose_command.hpp"
 #include "cli/shear_commands.hpp"
 
 #include <chrono>
@@ -180,6 +181,7 @@ void run_scene_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging
 int run_command(const RunOptions& opt) {
   const Scenario scenario = opt.scenario == "scene"       ? Scenario::kScene
                             : opt.scenario == "oedometer" ? Scenario::kOedometer
+                            : opt.scenario == "repose"    ? Scenario::kRepose
                                                           : Scenario::kShear;
   const bool series = opt.scenario == "shear-series";
   RunConfig config;
@@ -210,6 +212,7 @@ int run_command(const RunOptions& opt) {
     OutputStaging out(opt.out_dir, opt.force);
     if (scenario == Scenario::kOedometer) run_oedometer_scenario(config, opt, out);
     else if (scenario == Scenario::kShear) run_shear_scenario(config, opt, out);
+    else if (scenario == Scenario::kRepose) run_repose_scenario(config, opt, out);
     else run_scene_scenario(config, opt, out);
     // --force: the earlier result's files that this run does not write go too.
     out.commit(opt.force ? earlier_run_outputs(opt.out_dir) : std::vector<std::string>{});

@@ -7,6 +7,7 @@
 #include <vector>
 #include "config/config_reader.hpp"
 #include "config/oedometer_cycle_spec.hpp"
+#include "config/repose_spec.hpp"
 #include "engine/world.hpp"
 
 namespace colza {
@@ -138,10 +139,11 @@ struct RunConfig {
   SampleSpec sample;
   OedometerSpec oedometer;
   ShearBoxSpec shear_box;
+  ReposeSpec repose;
   SceneSpec scene;
 };
 
-enum class Scenario { kOedometer, kShear, kScene };
+enum class Scenario { kOedometer, kShear, kScene, kRepose };
 const char* to_string(Scenario s);
 
 // Reads and validates everything the scenario needs, then rejects unknown keys.
