@@ -32,6 +32,18 @@ bool skipped(const std::string& line) {
 
 }  // namespace
 
+std::vector<std::string> read_csv_header(const std::string& csv, const std::string& spec_file, const std::string& key) {
+  if (const std::string why = unreadable_file_reason(csv); !why.empty())
+    throw ConfigError(spec_file, key, "the measured data file " + csv + " " + why);
+  std::ifstream in(csv);
+  std::string line;
+  for (std::size_t line_number = 1; std::getline(in, line); ++line_number) {
+    if (line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+    if (!skipped(line)) return split_csv_line(line);
+  }
+  throw ConfigError(spec_file, key, csv + ": the file has no header line (it is empty or only comments)");
+}
+
 std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const std::vector<std::string>& columns,
                                                   const std::string& spec_file, const std::string& key,
                                                   std::vector<std::size_t>& line_numbers) {

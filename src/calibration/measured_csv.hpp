@@ -18,6 +18,10 @@ std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const 
                                                   const std::string& spec_file, const std::string& key,
                                                   std::vector<std::size_t>& line_numbers);
 
+// The column names of the CSV's header line (to tell which optional columns it has); the file's
+// problems are ConfigErrors as above.
+std::vector<std::string> read_csv_header(const std::string& csv, const std::string& spec_file, const std::string& key);
+
 // A measured curve's displacement column `x` (named `column`, in m) must increase strictly
 // from row to row: a ConfigError naming the rows' lines otherwise (sorting, repeated rows or
 // an unloading part would otherwise bend the fit or the strength without a word).

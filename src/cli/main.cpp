@@ -13,6 +13,7 @@
 #endif
 
 #include "cli/calibrate_command.hpp"
+#include "cli/features_command.hpp"
 #include "cli/run_commands.hpp"
 #include "core/interrupt.hpp"
 #include "core/unstable_motion.hpp"
@@ -88,9 +89,9 @@ int main(int argc, char** argv) {
 
   colza::RunOptions opt;
   CLI::App* run = app.add_subcommand("run", "run a scenario and write its results to --out");
-  run->add_option("scenario", opt.scenario, "oedometer | shear | shear-series | scene")
+  run->add_option("scenario", opt.scenario, "oedometer | shear | shear-series | repose | scene")
       ->required()
-      ->check(CLI::IsMember({"oedometer", "shear", "shear-series", "scene"}));
+      ->check(CLI::IsMember({"oedometer", "shear", "shear-series", "repose", "scene"}));
   run->add_option("--config", opt.config_path,
                   "TOML config (oedometer: default built-in = data/oedometer.toml; shear, shear-series and "
                   "scene need one, e.g. data/shear.toml)");
@@ -132,6 +133,27 @@ int main(int argc, char** argv) {
   calibrate->add_flag("--force", cal.force, "replace an earlier calibration result in --out (finished runs are still reused)");
   calibrate->add_flag("--quiet", cal.quiet, "no per-run lines");
 
+  colza::FeaturesOptions feat;
+  CLI::App* features = app.add_subcommand(
+      "features", "the lab-test features of a curve file (a measured one, or a colza curve.csv), printed as JSON");
+  features->add_option("test", feat.test, "load-unload | shear")
+      ->required()
+      ->check(CLI::IsMember({"load-unload", "shear"}));
+  features->add_option("--csv", feat.csv, "the curve (formats: data/measured/README.md)")->required();
+  features->add_option("--cylinder-diameter", feat.cylinder_diameter, "load-unload: the cylinder's diameter (m)")
+      ->check(positive_finite());
+  features->add_option("--height", feat.height, "load-unload: the sample's height at zero travel (m)")
+      ->check(positive_finite());
+  features->add_option("--modulus-stresses", feat.modulus_stresses,
+                       "load-unload: piston stresses where M and K are read (Pa; default half the largest)")
+      ->delimiter(',');
+  features->add_option("--modulus-window", feat.modulus_window, "load-unload: relative half-width of the fit (0.1)")
+      ->check(positive_finite());
+  features->add_option("--window-start", feat.window_start, "shear: residual window start (m, 0.020)");
+  features->add_option("--window-end", feat.window_end, "shear: residual window end (m, 0.030)");
+  features->add_option("--box-length", feat.box_length, "shear: the box's length (m, 1.0): a longer displacement is an error")
+      ->check(positive_finite());
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -164,6 +186,7 @@ int main(int argc, char** argv) {
   try {
     if (run->parsed()) return colza::run_command(opt);
     if (calibrate->parsed()) return colza::calibrate_command(cal);
+    if (features->parsed()) return colza::features_command(feat);
   } catch (const colza::Interrupted& e) {
     std::fprintf(stderr, "colza: %s: stopped; the unfinished outputs were removed, earlier results are untouched\n",
                  e.what());

@@ -1,18 +1,21 @@
 #include "cli/run_commands.hpp"
 
 #include "cli/command_common.hpp"
+#include "cli/repose_command.hpp"
 #include "cli/shear_commands.hpp"
 
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 
+#include "analysis/inertial_number.hpp"
 #include "config/run_config.hpp"
 #include "core/unstable_motion.hpp"
 #include "core/version.hpp"
 #include "contact/slot_registry.hpp"
 #include "io/format_number.hpp"
 #include "io/hdf5_writer.hpp"
+#include "io/lab_features_json.hpp"
 #include "io/output_dir.hpp"
 #include "io/packing_file.hpp"
 #include "io/summary.hpp"
@@ -23,9 +26,20 @@ namespace colza {
 
 namespace {
 
+// The oedometer's inertial number (analysis/inertial_number.hpp) at its largest piston stress,
+// where it is smallest: gamma_dot = piston_speed / packing_height.
+nlohmann::json oedometer_inertial_number(const RunConfig& c, const OedometerResult& r, double& value) {
+  const double area = kPi * 0.25 * c.oedometer.cylinder_diameter * c.oedometer.cylinder_diameter;
+  return inertial_number_json({oedometer_strain_rate(c.oedometer.piston_speed, r.packing_height),
+                               0.5 * (c.particle.diameter_min + c.particle.diameter_max), c.particle.density,
+                               r.max_force / area, "piston_speed / packing_height",
+                               "the largest piston stress (max_force / cylinder area)"},
+                              value);
+}
+
 // What a user must not miss in an oedometer result: printed as WARNING lines and kept in
 // summary.json's "warnings".
-std::vector<std::string> oedometer_warnings(const RunConfig& c, const OedometerResult& r) {
+std::vector<std::string> oedometer_warnings(const RunConfig& c, const OedometerResult& r, double inertial_number) {
   std::vector<std::string> w = settings_warnings(c, Scenario::kOedometer, /*series=*/false);
   if (r.settling.in_this_run() && !r.settling.converged) w.push_back(settling_warning(c, r.settling));
   // A sample cut at the rim stands within a sphere of it; one that stops short was not cut
@@ -38,10 +52,35 @@ std::vector<std::string> oedometer_warnings(const RunConfig& c, const OedometerR
                 " mm: it was not cut level, so bulk_density (particle mass / (cylinder area x the highest sphere's "
                 "top)) counts its rough top as sample and reads low; " +
                 (r.settling.in_this_run() ? "generate more spheres (sample.count)" : "load a packing that fills the cylinder"));
-  if (!r.fit.reached_force_max)
+  const OedometerCycleSpec& cycles = c.oedometer.cycles;
+  if (!r.fit.reached_force_max && !cycles.enabled())  // with cycles their first target ends the fit's range
     w.push_back("the force never reached fit_force_max = " + format_shortest(c.oedometer.fit_force_max) +
                 " N; the fit covers a shorter range");
+  if (cycles.enabled() && r.targets_reached < cycles.targets.size())
+    w.push_back("the run stopped (" + r.stop_reason + ") after " + std::to_string(r.targets_reached) + " of the " +
+                std::to_string(cycles.targets.size()) + " targets of oedometer.cycles: the later branches are missing");
+  if (inertial_number > kQuasiStaticInertialNumber)
+    w.push_back("the inertial number at the largest piston stress is " + format_significant(inertial_number, 3) +
+                ", above " + format_shortest(kQuasiStaticInertialNumber) +
+                ": the test is not quasi-static and its curve depends on oedometer.piston_speed");
   return w;
+}
+
+// One line per branch and per cycle of a load-unload run (the numbers of summary.json's
+// load_unload, in kPa, MPa and per cent).
+void print_load_unload(const LoadUnloadAnalysis& a) {
+  for (std::size_t k = 0; k < a.branches.size(); ++k) {
+    const CurveBranch& b = a.branches[k];
+    std::printf("  branch %zu (%s): %.2f -> %.2f kPa, strain %.4f -> %.4f %%", k, b.loading ? "loading" : "unloading",
+                1e-3 * b.stress_start, 1e-3 * b.stress_end, 100.0 * b.strain_start, 100.0 * b.strain_end);
+    for (const LocalModulus& m : b.moduli)
+      std::printf("; at %.4g kPa M = %.4g MPa, K = %.3f", 1e-3 * m.stress, 1e-6 * m.modulus, m.lateral_ratio);
+    std::printf("\n");
+  }
+  for (const LoadUnloadCycle& cy : a.cycles)
+    std::printf("  cycle (branches %zu-%zu): loop area %.4g J/m^3, permanent strain %.4f %%, rebound %.4f %%\n",
+                cy.loading_branch, cy.unloading_branch, cy.loop_area, 100.0 * cy.permanent_strain,
+                100.0 * cy.rebound_strain);
 }
 
 void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging& out) {
@@ -70,7 +109,16 @@ void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputSta
     fit["r2"] = r.fit.fit.r2;
   }
   s["fit"] = fit;
-  const std::vector<std::string> warnings = oedometer_warnings(c, r);
+  double inertial_number = 0.0;
+  s["inertial_number"] = oedometer_inertial_number(c, r, inertial_number);
+  if (c.oedometer.cycles.enabled()) {
+    nlohmann::json cycles = load_unload_json(r.cycles, simulated_cycle_settings(c.oedometer.cycles));
+    cycles["targets"] = c.oedometer.cycles.targets;
+    cycles["targets_reached"] = r.targets_reached;
+    cycles["packing_height"] = r.packing_height;
+    s["load_unload"] = cycles;
+  }
+  const std::vector<std::string> warnings = oedometer_warnings(c, r, inertial_number);
   s["warnings"] = warnings;
   s["max_force"] = r.max_force;
   s["stop_reason"] = r.stop_reason;
@@ -101,6 +149,8 @@ void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputSta
                 r.fit.fit.coefficients[1], r.fit.fit.coefficients[2], r.fit.fit.r2);
   else
     std::printf(" not enough points above %.0f N\n", c.oedometer.fit_force_min);
+  if (c.oedometer.cycles.enabled()) print_load_unload(r.cycles);
+  std::printf("  inertial number %.3g at the largest piston stress\n", inertial_number);
   for (const std::string& warning : warnings) std::printf("  WARNING: %s\n", warning.c_str());
   std::printf("  %llu steps, dt %.3g..%.3g s, %.1f s wall, %.3g particle-steps/s\n",
               static_cast<unsigned long long>(r.steps), r.dt_min, r.dt_max, total_wall_seconds(r.stages),
@@ -131,6 +181,7 @@ void run_scene_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging
 int run_command(const RunOptions& opt) {
   const Scenario scenario = opt.scenario == "scene"       ? Scenario::kScene
                             : opt.scenario == "oedometer" ? Scenario::kOedometer
+                            : opt.scenario == "repose"    ? Scenario::kRepose
                                                           : Scenario::kShear;
   const bool series = opt.scenario == "shear-series";
   RunConfig config;
@@ -161,6 +212,7 @@ int run_command(const RunOptions& opt) {
     OutputStaging out(opt.out_dir, opt.force);
     if (scenario == Scenario::kOedometer) run_oedometer_scenario(config, opt, out);
     else if (scenario == Scenario::kShear) run_shear_scenario(config, opt, out);
+    else if (scenario == Scenario::kRepose) run_repose_scenario(config, opt, out);
     else run_scene_scenario(config, opt, out);
     // --force: the earlier result's files that this run does not write go too.
     out.commit(opt.force ? earlier_run_outputs(opt.out_dir) : std::vector<std::string>{});

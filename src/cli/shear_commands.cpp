@@ -8,7 +8,9 @@
 #include <optional>
 #include <sstream>
 
+#include "analysis/inertial_number.hpp"
 #include "analysis/mohr_coulomb.hpp"
+#include "analysis/shear_curve_features.hpp"
 #include "cli/command_common.hpp"
 #include "config/config_error.hpp"
 #include "core/concurrent.hpp"
@@ -16,6 +18,7 @@
 #include "io/fingerprint.hpp"
 #include "io/format_number.hpp"
 #include "io/hdf5_writer.hpp"
+#include "io/lab_features_json.hpp"
 #include "io/load_label.hpp"
 #include "io/output_dir.hpp"
 #include "io/packing_file.hpp"
@@ -45,6 +48,24 @@ std::string config_fingerprint(const RunConfig& c) {
 // did not hold the load (the paper's speed gives ~0.2 %, ten times it ~2 %: README).
 constexpr double kHeldStressError = 0.10;
 
+// A shear load's inertial number (analysis/inertial_number.hpp): gamma_dot = shear_speed / t,
+// t = min(10 mean diameters, the box's height), at the load's normal stress.
+nlohmann::json shear_inertial_number(const RunConfig& c, const ShearLoadResult& r, double& value) {
+  const double d = 0.5 * (c.particle.diameter_min + c.particle.diameter_max);
+  return inertial_number_json({shear_box_strain_rate(c.shear_box.shear_speed, d, c.shear_box.height), d,
+                               c.particle.density, r.normal_stress_target,
+                               "shear_speed / min(10 mean diameters, shear_box.height)", "the normal stress"},
+                              value);
+}
+
+// The whole curve's features (analysis/shear_curve_features.hpp) from the recorded rows, as
+// for a measured curve: peak over a trailing 1 mm, secant stiffness to half the peak.
+ShearCurveSettings shear_feature_settings(const RunConfig& c) {
+  ShearCurveSettings s;
+  s.window = {c.shear_box.strength_window_start, c.shear_box.strength_window_end};
+  return s;
+}
+
 std::vector<std::string> load_warnings(const RunConfig& c, const ShearSample& sample, const ShearLoadResult& r,
                                        bool series) {
   std::vector<std::string> w = settings_warnings(c, Scenario::kShear, series, {r.normal_stress_target});
@@ -71,6 +92,12 @@ std::vector<std::string> load_warnings(const RunConfig& c, const ShearSample& sa
                 " mm, not particle.diameter_max above the shear plane at " + format_significant(1e3 * plane, 4) +
                 " mm (shear_box.shear_plane): the upper half holds (almost) no sample, and this shear strength is "
                 "not the sample's");
+  double inertial_number = 0.0;
+  shear_inertial_number(c, r, inertial_number);
+  if (inertial_number > kQuasiStaticInertialNumber)
+    w.push_back("the inertial number is " + format_significant(inertial_number, 3) + ", above " +
+                format_shortest(kQuasiStaticInertialNumber) +
+                ": the test is not quasi-static and its strength depends on shear_box.shear_speed");
   return w;
 }
 
@@ -86,6 +113,13 @@ nlohmann::json load_summary(const RunConfig& c, const ShearSample& sample, const
   s["shear_strength"] = r.shear_strength;
   s["strength_window"] = {c.shear_box.strength_window_start, c.shear_box.strength_window_end};
   s["peak_shear_stress"] = r.peak_shear_stress;
+  const ShearCurveSettings features = shear_feature_settings(c);
+  s["curve_features"] = shear_features_json(
+      shear_curve_features(r.curve.column("shear_displacement"), r.curve.column("shear_stress"),
+                           r.curve.column("plate_height"), features),
+      features);
+  double inertial_number = 0.0;
+  s["inertial_number"] = shear_inertial_number(c, r, inertial_number);
   s["mean_normal_stress"] = r.mean_normal_stress;
   s["mean_normal_stress_error"] = r.mean_normal_stress_error;
   s["consolidated"] = r.consolidated;
@@ -311,6 +345,11 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
                           {"particles_outside", load_json[k].value("particles_outside", 0)},
                           {"wall_seconds", load_json[k].value("wall_seconds", 0.0)},
                           {"reused", load_json[k].value("reused", false)},
+                          // null for a load reused from a build before these were reported
+                          {"curve_features", load_json[k].value("curve_features", nlohmann::json(nullptr))},
+                          {"inertial_number", load_json[k].contains("inertial_number")
+                                                  ? load_json[k]["inertial_number"].value("value", nlohmann::json(nullptr))
+                                                  : nlohmann::json(nullptr)},
                           {"directory", load_names[k]}});
   if (loads.size() >= 2) {
     const MohrCoulombFit mc = fit_mohr_coulomb(loads, strength);

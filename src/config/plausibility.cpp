@@ -142,6 +142,10 @@ std::vector<ImplausibleSetting> implausible_settings(const RunConfig& c, Scenari
                 " kg/m^3 of seeds: densities are in kg/m^3 (1.25 g/cm^3 is 1250). A deliberate mass scaling "
                 "is fine if the test stays quasi-static");
   check_gravity(c, w);
+  if (scenario == Scenario::kRepose) {
+    check_speed(c, "repose.lift_speed", c.repose.lift_speed, "5 mm/s is 0.005", w);
+    return w;
+  }
   if (scenario == Scenario::kOedometer) {
     check_speed(c, "oedometer.piston_speed", c.oedometer.piston_speed, "500 mm/min is 0.00833", w);
     const double area = M_PI / 4.0 * c.oedometer.cylinder_diameter * c.oedometer.cylinder_diameter;

@@ -21,6 +21,7 @@ const char* to_string(Scenario s) {
     case Scenario::kOedometer: return "oedometer";
     case Scenario::kShear: return "shear";
     case Scenario::kScene: return "scene";
+    case Scenario::kRepose: return "repose";
   }
   return "?";
 }
@@ -116,6 +117,7 @@ OedometerSpec read_oedometer(const ConfigNode& t, const ParticleSpec& particle) 
                                     format_shortest(particle.diameter_max) + " m (lengths are in metres)");
   if (o.generation_height < o.cylinder_height) t.fail("generation_height", "must be at least oedometer.cylinder_height");
   o.packing_file = t.string("packing_file", "");
+  o.cycles = read_oedometer_cycles(t, kPi * 0.25 * o.cylinder_diameter * o.cylinder_diameter, o.stop_force);
   return o;
 }
 
@@ -364,6 +366,9 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
           [&](const std::vector<PackedSphere>& spheres, const std::string& path, const std::string& key) {
             check_packing_in_box(spheres, c.shear_box.length, c.shear_box.width, path, key);
           });
+  } else if (scenario == Scenario::kRepose) {
+    c.sample = read_sample(root.table("sample"), scenario);
+    c.repose = read_repose(root.table("repose"), c.particle.diameter_max, c.wall.friction);
   } else {
     c.scene = read_scene(root.table("scene"), reader);
     if (c.integration.automatic_time_step && !root.table("integration").has("time_step"))
@@ -371,7 +376,8 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
   }
   reader.reject_unknown_keys();
   const bool settles = (scenario == Scenario::kOedometer && c.oedometer.packing_file.empty()) ||
-                       (scenario == Scenario::kShear && c.shear_box.packing_file.empty());
+                       (scenario == Scenario::kShear && c.shear_box.packing_file.empty()) ||
+                       scenario == Scenario::kRepose;
   if (settles) {
     require_a_criterion_below_the_weight(c, root.table("sample"));
     require_a_sample_deep_enough(c, scenario, root);

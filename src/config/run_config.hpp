@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 #include "config/config_reader.hpp"
+#include "config/oedometer_cycle_spec.hpp"
+#include "config/repose_spec.hpp"
 #include "engine/world.hpp"
 
 namespace colza {
@@ -65,6 +67,8 @@ struct OedometerSpec {                // [oedometer]
   // given, generation and settling are skipped and loading starts from it at rest. This is
   // how colza and YADE start from the identical sample in the cross-check.
   std::string packing_file;
+  // oedometer.cycles (config/oedometer_cycle_spec.hpp): load-unload targets; empty = one loading.
+  OedometerCycleSpec cycles;
 };
 
 // How the shear box's plates touch a sphere where two of them meet (walls/wall.hpp, RectangleEdges).
@@ -139,10 +143,11 @@ struct RunConfig {
   SampleSpec sample;
   OedometerSpec oedometer;
   ShearBoxSpec shear_box;
+  ReposeSpec repose;
   SceneSpec scene;
 };
 
-enum class Scenario { kOedometer, kShear, kScene };
+enum class Scenario { kOedometer, kShear, kScene, kRepose };
 const char* to_string(Scenario s);
 
 // Reads and validates everything the scenario needs, then rejects unknown keys.

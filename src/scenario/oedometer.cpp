@@ -6,6 +6,7 @@
 #include "scenario/bonds.hpp"
 #include "scenario/generation.hpp"
 #include "scenario/sample_preparation.hpp"
+#include "scenario/wall_load.hpp"
 
 namespace colza {
 
@@ -25,7 +26,31 @@ std::size_t add_oedometer_piston(World& world, const OedometerSpec& o, double to
   return world.walls.size() - 1;
 }
 
+Table cycle_curve_columns() {
+  return Table({"time", "piston_displacement", "piston_force", "contacts", "bonds", "radial_force",
+                "cylinder_friction_force", "branch"},
+               {"s", "m", "N", "1", "1", "N", "N", "1"});
+}
+
+CycleAnalysisSettings simulated_cycle_settings(const OedometerCycleSpec& cycles) {
+  CycleAnalysisSettings s;
+  s.modulus_stresses = cycles.modulus_stresses;
+  s.modulus_window = cycles.modulus_window;
+  s.reversal_tolerance = 0.0;
+  return s;
+}
+
 namespace {
+
+// The rows of one branch of a load-unload curve (its `branch` column equal to `b`).
+std::vector<double> branch_rows(const Table& curve, const std::string& column, double b) {
+  const std::vector<double>& x = curve.column(column);
+  const std::vector<double>& branch = curve.column("branch");
+  std::vector<double> out;
+  for (std::size_t k = 0; k < x.size(); ++k)
+    if (branch[k] == b) out.push_back(x[k]);
+  return out;
+}
 
 double total_mass(const ParticleArrays& p) {
   double m = 0.0;
@@ -74,6 +99,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   const double area = kPi * 0.25 * o.cylinder_diameter * o.cylinder_diameter;
   r.bulk_density = total_mass(world.particles) / (area * top);
   const std::size_t piston_id = add_oedometer_piston(world, o, top);
+  const std::size_t envelope_id = 1;  // build_oedometer_container: the floor, then the envelope
   stepper.prepare(world);
   if (c.contact.bond_install == BondInstallMoment::kBeforeLoading) r.bonds_installed = install_bonds(world, stepper, c.contact.bond_gap);
   r.settled = world.particles;
@@ -85,6 +111,13 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   r.dt_min = r.dt_max = world.dt;
   bool stop = false;
   std::uint64_t load_steps = 0;
+  // oedometer.cycles: the piston heads for targets[branch] (Pa), down on even branches, up on
+  // odd ones, and turns in the step after the one whose force reached the target.
+  const std::vector<double>& targets = o.cycles.targets;
+  const bool cycling = o.cycles.enabled();
+  if (cycling) r.curve = cycle_curve_columns();
+  std::size_t branch = 0;
+  bool turn = false;
   stepper.set_integration_sums({.unbalanced = false, .damping_work = false});  // neither is read while loading
   stepper.set_between_halves(Stepper::BetweenHalves::kWallsOnly);  // the observer reads the piston and contact counts
   while (!stop) {
@@ -93,13 +126,25 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
       const double travel = top - p.origin.z();
       const double force = p.force.z();  // particles push the piston up: compression positive
       r.max_force = std::max(r.max_force, force);
+      if (cycling) {
+        const double stress = force / area;
+        turn = branch % 2 == 0 ? stress >= targets[branch] : stress <= targets[branch];
+      }
       if (force >= o.stop_force) r.stop_reason = "stop_force";
       else if (travel >= o.max_piston_travel) r.stop_reason = "max_piston_travel";
+      else if (turn && branch + 1 == targets.size()) r.stop_reason = "cycles_completed";
       stop = !r.stop_reason.empty();
-      if (load_steps % static_cast<std::uint64_t>(o.record_interval) == 0 || stop)
-        r.curve.add_row({w.time - t_start, travel, force,
-                         static_cast<double>(w.contacts.touching_particle_contacts() + w.contacts.touching_wall_contacts()),
-                         static_cast<double>(w.contacts.bonded_contacts())});
+      if (load_steps % static_cast<std::uint64_t>(o.record_interval) == 0 || stop || turn) {
+        const double contacts =
+            static_cast<double>(w.contacts.touching_particle_contacts() + w.contacts.touching_wall_contacts());
+        if (!cycling) {
+          r.curve.add_row({w.time - t_start, travel, force, contacts, static_cast<double>(w.contacts.bonded_contacts())});
+        } else {
+          r.curve.add_row({w.time - t_start, travel, force, contacts, static_cast<double>(w.contacts.bonded_contacts()),
+                           wall_normal_force_sum(w.contacts, static_cast<Index>(envelope_id)),
+                           0.0 - w.walls[envelope_id].force.z(), static_cast<double>(branch)});  // 0 - f: no "-0"
+        }
+      }
       if (progress.active() && load_steps % 2000 == 0) {
         char detail[96];
         std::snprintf(detail, sizeof detail, "travel %.2f mm, piston force %.2f kN, dt %.3g s", 1e3 * travel, 1e-3 * force, w.dt);
@@ -107,6 +152,11 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
       }
     });
     ++load_steps;
+    if (turn && !stop) {  // reverse: the next branch heads for the next target
+      ++branch;
+      world.walls[piston_id].velocity = Vec3(0.0, 0.0, branch % 2 == 0 ? -o.piston_speed : o.piston_speed);
+      turn = false;
+    }
     r.dt_min = std::min(r.dt_min, world.dt);
     r.dt_max = std::max(r.dt_max, world.dt);
   }
@@ -115,8 +165,18 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   load_clock.count_steps(load_steps, world.particles.size());
   r.stages.push_back(load_clock.finish());
   r.steps = r.settling.steps + load_steps;
-  r.fit = fit_compression_curve(r.curve.column("piston_displacement"), r.curve.column("piston_force"),
-                                o.fit_force_min, o.fit_force_max);
+  if (!cycling) {
+    r.fit = fit_compression_curve(r.curve.column("piston_displacement"), r.curve.column("piston_force"),
+                                  o.fit_force_min, o.fit_force_max);
+  } else {
+    r.targets_reached = branch + (r.stop_reason == "cycles_completed" ? 1 : 0);
+    r.fit = fit_compression_curve(branch_rows(r.curve, "piston_displacement", 0.0),
+                                  branch_rows(r.curve, "piston_force", 0.0), o.fit_force_min, o.fit_force_max);
+    if (r.curve.rows() >= 2)
+      r.cycles = analyse_load_unload(r.curve.column("piston_displacement"), r.curve.column("piston_force"),
+                                     r.curve.column("radial_force"), {area, top, o.cylinder_diameter},
+                                     simulated_cycle_settings(o.cycles));
+  }
   r.final_state = world.particles;
   r.bonds_broken_tension = stepper.events().bonds_broken_tension;
   r.bonds_broken_shear = stepper.events().bonds_broken_shear;

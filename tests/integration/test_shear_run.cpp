@@ -15,6 +15,16 @@ namespace {
 
 const std::string kConfig = source_path("tests/data/small_shear.toml");
 
+// A summary's warnings without the inertial number's: the small box shears at 3000 mm/min,
+// I = 1.0-1.8e-3 at its loads, so every load of it is warned of (README, Inertial number;
+// test SmallShearSeries.EachLoadReportsItsInertialNumberAndWholeCurveFeatures).
+nlohmann::json warnings_but_speed(const nlohmann::json& summary) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& w : summary["warnings"])
+    if (w.get<std::string>().rfind("the inertial number is ", 0) != 0) out.push_back(w);
+  return out;
+}
+
 std::vector<std::vector<double>> read_rows(const fs::path& file, std::vector<std::string>& header) {
   std::istringstream in(read_file(file));
   std::string line;
@@ -91,7 +101,7 @@ TEST_F(SmallShearSeries, ALoadTheServoCannotHoldIsAWarning) {
                                 " --set shear_box.shear_displacement=0.002 --set shear_box.strength_window_end=0.002"
                                 " --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
-  const auto warnings = read_json(out / "summary.json")["warnings"];
+  const auto warnings = warnings_but_speed(read_json(out / "summary.json"));
   ASSERT_EQ(warnings.size(), 2u) << warnings.dump();
   const std::string unit = "--normal-stress: normal stress 25.75 Pa is outside 100 Pa .. 10 MPa";
   EXPECT_EQ(warnings[0].get<std::string>().rfind(unit, 0), 0u) << warnings[0];
@@ -100,7 +110,7 @@ TEST_F(SmallShearSeries, ALoadTheServoCannotHoldIsAWarning) {
   EXPECT_NE(w.find("during shearing the normal stress was"), std::string::npos) << w;
   EXPECT_NE(w.find("(normal stresses are in Pa)"), std::string::npos) << w;
   // The series' loads, held, have none.
-  EXPECT_TRUE(read_json(out_ / "load-78750Pa" / "summary.json")["warnings"].empty());
+  EXPECT_TRUE(warnings_but_speed(read_json(out_ / "load-78750Pa" / "summary.json")).empty());
 }
 
 TEST_F(SmallShearSeries, SpheresLeavingTheBoxAreAWarning) {
@@ -118,13 +128,13 @@ TEST_F(SmallShearSeries, SpheresLeavingTheBoxAreAWarning) {
   const auto s = read_json(out / "summary.json");
   const int outside = s["particles_outside"].get<int>();
   EXPECT_GT(outside, 0);
-  const auto warnings = s["warnings"];
+  const auto warnings = warnings_but_speed(s);
   ASSERT_EQ(warnings.size(), 1u) << warnings.dump();
   EXPECT_EQ(warnings[0].get<std::string>(), std::to_string(outside) + " particles ended outside the box");
   EXPECT_NE(r.stdout_text.find("WARNING: " + std::to_string(outside) + " particles ended outside the box"),
             std::string::npos)
       << r.stdout_text;
-  EXPECT_TRUE(read_json(out_ / "load-25750Pa" / "summary.json")["warnings"].empty());
+  EXPECT_TRUE(warnings_but_speed(read_json(out_ / "load-25750Pa" / "summary.json")).empty());
 }
 
 TEST_F(SmallShearSeries, APlateBelowTheShearPlaneIsAWarning) {
@@ -147,7 +157,7 @@ TEST_F(SmallShearSeries, APlateBelowTheShearPlaneIsAWarning) {
                                 " --set shear_box.shear_displacement=0.002 --set shear_box.strength_window_start=0.001"
                                 " --set shear_box.strength_window_end=0.002 --out " + (out / "run").string());
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
-  const auto warnings = read_json(out / "run" / "summary.json")["warnings"];
+  const auto warnings = warnings_but_speed(read_json(out / "run" / "summary.json"));
   ASSERT_EQ(warnings.size(), 1u) << warnings.dump();
   const std::string w = warnings[0].get<std::string>();
   EXPECT_EQ(w.rfind("the plate came to rest at ", 0), 0u) << w;
@@ -330,4 +340,45 @@ TEST(ShearBox, SingleLoadRunAndItsErrors) {
   EXPECT_DOUBLE_EQ(s["normal_stress"].get<double>(), 40000.0);
   EXPECT_GT(s["shear_strength"].get<double>(), 0.0);
   EXPECT_TRUE(fs::exists(out / "packing.txt"));
+}
+
+TEST_F(SmallShearSeries, EachLoadReportsItsInertialNumberAndWholeCurveFeatures) {
+  for (const char* load : {"load-25750Pa", "load-78750Pa"}) {
+    const auto s = read_json(out_ / load / "summary.json");
+    // I = (v / t) d sqrt(rho / p): v = 0.05 m/s, t = min(10 d, 40 mm) = 40 mm, d = 6.5 mm,
+    // rho = 1230 kg/m^3: 8.125e-3 sqrt(1230 / p) = 1.78e-3 at 25.75 kPa, 1.02e-3 at 78.75 kPa.
+    const double p = s["normal_stress"].get<double>();
+    const double expected = 0.05 / 0.040 * 0.0065 * std::sqrt(1230.0 / p);
+    EXPECT_NEAR(s["inertial_number"]["value"].get<double>(), expected, 1e-12 * expected) << load;
+    const auto& w = s["warnings"];
+    ASSERT_FALSE(w.empty()) << load;
+    EXPECT_EQ(w.back().get<std::string>().rfind("the inertial number is ", 0), 0u) << w.dump();
+    const auto& f = s["curve_features"];
+    // Features of the recorded rows: the residual is the window mean of the rows, which the
+    // strength (every step) matches to the sampling (README: 0.01-0.3 % on the small box).
+    const double residual = f["residual_strength"].get<double>();
+    EXPECT_NEAR(residual, s["shear_strength"].get<double>(), 0.01 * residual) << load;
+    const double peak = f["peak_strength"].get<double>();
+    // The largest 1 mm mean against the 1.5 mm window's mean: at least about as large (the
+    // window's own 1 mm stretches are among the peak's candidates).
+    EXPECT_GE(peak, 0.98 * residual) << load;
+    EXPECT_NEAR(f["drop"].get<double>(), peak - residual, 1e-9 * peak) << load;
+    EXPECT_LE(peak, s["peak_shear_stress"].get<double>()) << load;  // a mean never exceeds the largest step
+    EXPECT_GT(f["initial_stiffness"].get<double>(), 0.0) << load;
+    EXPECT_TRUE(f["dilatancy_angle_deg"].is_number()) << f.dump();
+    EXPECT_GE(f["max_dilation"].get<double>(), 0.0) << load;  // row 0 counts: the largest rise is >= 0
+  }
+  // `colza features shear` reads a curve as a measured one (calibration/measured_shear_features)
+  // and reduces it by the same code: the load's own curve gives its summary's features.
+  const CliResult f = run_colza("features shear --csv " + (out_ / "load-25750Pa" / "curve.csv").string() +
+                                " --window-start 0.0015 --window-end 0.003 --box-length 0.06");
+  ASSERT_EQ(f.exit_code, 0) << f.stderr_text;
+  const auto measured = nlohmann::json::parse(f.stdout_text)["curve_features"];
+  const auto own = read_json(out_ / "load-25750Pa" / "summary.json")["curve_features"];
+  for (const char* key : {"peak_strength", "residual_strength", "drop", "max_dilation", "dilatancy_angle_deg",
+                          "initial_stiffness"})
+    EXPECT_DOUBLE_EQ(measured[key].get<double>(), own[key].get<double>()) << key;
+  const auto series = read_json(out_ / "summary.json");
+  EXPECT_TRUE(series["loads"][0]["curve_features"].is_object());
+  EXPECT_TRUE(series["loads"][0]["inertial_number"].is_number());
 }

@@ -1,0 +1,40 @@
+// The angle of repose test (physics.md section 8; config: config/repose_spec.hpp): spheres
+// generated in an open-ended cylinder standing on a base plate, settled and cut at
+// fill_height, handed on at rest; the cylinder is lifted at lift_speed until its lower end
+// clears the highest sphere by a diameter, then stopped, and the heap is left to rest until
+// the mean unbalanced force falls below rest_unbalanced_force; a cone is fitted to the heap's
+// surface (analysis/heap_angle.hpp). The base plate has its own friction (base_friction).
+#pragma once
+#include <vector>
+
+#include "analysis/heap_angle.hpp"
+#include "config/run_config.hpp"
+#include "core/stage_timing.hpp"
+#include "io/progress.hpp"
+#include "scenario/settling.hpp"
+
+namespace colza {
+
+struct ReposeResult {
+  std::size_t particles_generated = 0;
+  std::size_t particles = 0;           // in the column, after the cut
+  double column_height = 0.0;          // m, the highest top before the lift
+  double column_bulk_density = 0.0;    // kg/m^3, mass / (cylinder area x column_height)
+  SettleResult settling;               // the column's
+  double lift_time = 0.0;              // s of simulated time
+  SettleResult rest;                   // the heap's
+  HeapAngle heap;
+  std::size_t spheres_beyond_heap = 0; // farther from the axis than the heap's radius + 2 diameters
+  double dt = 0.0;                     // s, the last step
+  std::uint64_t steps = 0;             // lift and rest
+  std::vector<StageTiming> stages;
+  ParticleArrays column;               // the settled column at rest (packing.txt)
+  ParticleArrays final_state;          // the heap
+};
+
+ReposeResult run_repose(const RunConfig& config, Progress& progress);
+
+// The cone-fit settings of the config (sectors, fit range; the heap's axis is the cylinder's).
+HeapFitSettings repose_fit_settings(const ReposeSpec& r);
+
+}  // namespace colza
