@@ -375,3 +375,33 @@ TEST(Mechanisms, EnergyBalancesForEveryCombinationOfSlots) {
           }
   EXPECT_EQ(combinations, 108);
 }
+
+// Every normal law's force is the derivative of its stored energy: F = dE/dun by central
+// differences, for each alternative of the normal slot (on the unloading branch for
+// Walton-Braun, where its energy is the recoverable part). Step h = 1e-4 un: the central
+// difference's error is O(h^2 F'''), below 1e-6 of F here.
+TEST(Mechanisms, EveryNormalLawsForceIsTheDerivativeOfItsEnergy) {
+  const PairParameters q{2e5, 1e5, 0.3, 2.7e7, 1.1e7};
+  const PairContext c{q, kRadius, 0.8 * kRadius, 0.8 * kRadius / 1.8, 1e-4, 1e-6, false};
+  for (std::size_t alternative = 0; alternative < std::variant_size_v<NormalSlot>; ++alternative) {
+    NormalSlot slot;
+    if (alternative == 0) slot = LinearNormal{};
+    if (alternative == 1) slot = HertzNormal{};
+    if (alternative == 2) slot = WaltonBraunNormal{3.0};
+    ASSERT_EQ(slot.index(), alternative);
+    for (const double overlap : {2e-6, 2e-5, 1e-4}) {
+      double state[1] = {2e-4};  // Walton-Braun: unloaded from dmax = 0.2 mm (d0 = 0.133 mm)
+      const double un = std::holds_alternative<WaltonBraunNormal>(slot) ? 1.4e-4 + overlap * 0.1 : overlap;
+      const double h = 1e-4 * un;
+      const auto energy_at = [&](double x) {
+        return std::visit([&](const auto& n) { return n.energy(c, n.force(c, x, state, false).force, state); }, slot);
+      };
+      const double force = std::visit([&](const auto& n) { return n.force(c, un, state, false).force; }, slot);
+      const double derivative = (energy_at(un + h) - energy_at(un - h)) / (2.0 * h);
+      EXPECT_NEAR(derivative, force, 1e-6 * force) << "alternative " << alternative << ", un " << un;
+      // The overlap the law reads back from its force is the overlap.
+      const double back = std::visit([&](const auto& n) { return n.overlap(c, force, state); }, slot);
+      EXPECT_NEAR(back, un, 1e-9 * un) << "alternative " << alternative;
+    }
+  }
+}
