@@ -25,6 +25,19 @@ inline SlotRow save_row(const ContactHistory& h, const double* state, std::size_
   return r;
 }
 
+// The stored energy of a contact that vanished, from its saved row (J): rare, so kept out of
+// the force loop's code (it inlines everything else).
+[[gnu::noinline, gnu::cold]] inline double vanished_energy(const ContactModel& model, const SlotStateLayout& layout,
+                                                           const PairContext& c, const SlotRow& saved) {
+  const ContactEnergy e = stored_contact_energy(model, layout, c, saved.history, saved.state);
+  return e.normal + e.shear + e.rolling;
+}
+[[gnu::noinline, gnu::cold]] inline double vanished_shear_energy(const ContactModel& model,
+                                                                 const SlotStateLayout& layout, const PairContext& c,
+                                                                 const SlotRow& saved) {
+  return stored_contact_energy(model, layout, c, saved.history, saved.state).shear;
+}
+
 // The generic law's dissipation channels of one outcome go to the sink.
 template <class Sink>
 inline void book_mechanisms(const ContactOutcome& out, Sink& sink) {
@@ -59,10 +72,7 @@ inline bool generic_particle_pair_force(const ContactModel& model, const SlotSta
   if (was_touching) saved = save_row(h, state, layout.stride);
   const ContactOutcome out = evaluate_contact_generic(model, layout, c, k, h, state, bond_new_contacts);
   if (!out.carries_force) {
-    if (was_touching) {
-      const ContactEnergy before = stored_contact_energy(model, layout, c, saved.history, saved.state);
-      sink.broken(before.normal + before.shear + before.rolling);
-    }
+    if (was_touching) sink.broken(vanished_energy(model, layout, c, saved));
     sink.event(out.event);
     return false;
   }
@@ -114,7 +124,7 @@ inline bool generic_wall_pair_force(const ContactModel& model, const SlotStateLa
   if (mindlin) saved = save_row(h, state, layout.stride);
   const ContactOutcome out = evaluate_contact_generic(model, layout, c, k, h, state, false);
   if (!out.carries_force) {
-    if (mindlin) sink.stiffness_change(stored_contact_energy(model, layout, c, saved.history, saved.state).shear);
+    if (mindlin) sink.stiffness_change(vanished_shear_energy(model, layout, c, saved));
     return false;
   }
   sink.slip(out.slip_dissipation);
