@@ -1,7 +1,7 @@
 // crosscheck: runs colza and YADE on the same problems and compares them (physics.md
 // section 6; YADE is the independent referee of colza's physics).
 //
-//   crosscheck micro|oedometer|shear|all [--size small|full] [--colza PATH] [--yade PATH]
+//   crosscheck micro|oedometer|shear|all [--size small|full|small_rolling] [--colza PATH] [--yade PATH]
 //              [--workdir DIR] [--source DIR] [--tolerances FILE] [--reuse] [--loads PA,PA,..]
 //
 //   micro      deterministic 2-3 body scenes (crosscheck/scenes/micro_*.toml) run by
@@ -73,7 +73,7 @@ namespace {
 int usage(const char* msg) {
   if (msg) std::fprintf(stderr, "crosscheck: %s\n", msg);
   std::fprintf(stderr,
-               "usage: crosscheck micro|oedometer|shear|all [--size small|full] [--colza PATH] [--yade PATH]\n"
+               "usage: crosscheck micro|oedometer|shear|all [--size small|full|small_rolling] [--colza PATH] [--yade PATH]\n"
                "                  [--workdir DIR] [--source DIR] [--tolerances FILE] [--reuse] [--loads PA,PA,..]\n");
   return kExitUsage;
 }
@@ -143,7 +143,10 @@ int main(int argc, char** argv) {
   }
   if (opt.what != "micro" && opt.what != "oedometer" && opt.what != "shear" && opt.what != "all")
     return usage("command must be micro, oedometer, shear or all");
-  if (opt.size != "small" && opt.size != "full") return usage("--size must be small or full");
+  if (opt.size != "small" && opt.size != "full" && opt.size != "small_rolling")
+    return usage("--size must be small, full or small_rolling");
+  if (opt.size == "small_rolling" && opt.what != "oedometer")
+    return usage("--size small_rolling (the small oedometer with rolling resistance) is for oedometer only");
   // Options the command has no use for are refused rather than ignored.
   if (opt.what == "micro" && opt.size != "small")
     return usage("micro has one size (its scenes); --size full applies to oedometer, shear and all");

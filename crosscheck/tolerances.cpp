@@ -145,15 +145,16 @@ toml::table read_tolerances(const fs::path& file, const std::string& command, co
     if (!n.is_table()) c.fail(key, "must be a table");
   }
   const bool all = command == "all";
-  const auto sizes_of = [&](const std::string& setup) {
+  // The oedometer has a third size, small_rolling: the small one with rolling resistance.
+  const auto sizes_of = [&](const std::string& setup, const std::set<std::string>& sizes, const char* names) {
     for (const auto& [k, n] : c.section(doc, setup, false)) {
       const std::string s(k.str());
-      if (s != "small" && s != "full") c.fail(setup + "." + s, "unknown size (small, full)");
+      if (!sizes.count(s)) c.fail(setup + "." + s, std::string("unknown size (") + names + ")");
       if (!n.is_table()) c.fail(setup + "." + s, "must be a table");
     }
   };
-  sizes_of("oedometer");
-  sizes_of("shear");
+  sizes_of("oedometer", {"small", "full", "small_rolling"}, "small, full, small_rolling");
+  sizes_of("shear", {"small", "full"}, "small, full");
 
   // [micro]
   const toml::table& micro = c.section(doc, "micro", command == "micro" || all);
@@ -201,11 +202,8 @@ toml::table read_tolerances(const fs::path& file, const std::string& command, co
                                                            {"normal_stress_relative", Kind::kNonNegative},
                                                            {"cohesion_absolute_kpa", Kind::kNonNegative},
                                                            {"friction_angle_absolute_deg", Kind::kNonNegative}});
-  for (const std::string s : {"small", "full"}) {
-    // `all` runs the small setups, and the full ones too with --size full.
-    const bool wanted_oedometer = (command == "oedometer" && size == s) || (all && (s == "small" || size == "full"));
-    const bool wanted_shear = (command == "shear" && size == s) || (all && (s == "small" || size == "full"));
-    const std::string o = "oedometer." + s, h = "shear." + s;
+  const auto check_oedometer_size = [&](const std::string& s, bool wanted_oedometer) {
+    const std::string o = "oedometer." + s;
     const toml::table& oedometer_size = c.section(doc, o, wanted_oedometer);
     c.table(o, oedometer_size, oedometer, wanted_oedometer ? std::set<std::string>{"config"} : std::set<std::string>{});
     // The oedometer's ensemble judges the mean forces at `travels` and nothing else: without
@@ -224,6 +222,18 @@ toml::table read_tolerances(const fs::path& file, const std::string& command, co
           c.fail(o + ".travels", "a travel of " + fmt(n.value<double>().value_or(0.0), "%g") +
                                      " m is more than the oedometer's sample compresses: travels are in m (5 mm is "
                                      "0.005)");
+    for (const auto& [wanted, key] : {std::pair{wanted_oedometer, "config"},
+                                      std::pair{wanted_oedometer && s == "full", "settle_config"}})
+      if (const auto path = oedometer_size[key].value<std::string>(); wanted && path)
+        c.existing_file(o + "." + key, source, *path);
+  };
+  check_oedometer_size("small_rolling", command == "oedometer" && size == "small_rolling");
+  for (const std::string s : {"small", "full"}) {
+    // `all` runs the small setups, and the full ones too with --size full.
+    const bool wanted_oedometer = (command == "oedometer" && size == s) || (all && (s == "small" || size == "full"));
+    const bool wanted_shear = (command == "shear" && size == s) || (all && (s == "small" || size == "full"));
+    check_oedometer_size(s, wanted_oedometer);
+    const std::string h = "shear." + s;
     const toml::table& shear_size = c.section(doc, h, wanted_shear);
     const auto window_start = shear_size["strength_window_start"].value<double>();
     const auto window_end = shear_size["strength_window_end"].value<double>();
@@ -242,12 +252,8 @@ toml::table read_tolerances(const fs::path& file, const std::string& command, co
       for (double v : values)
         if (const std::string why = load_in_kpa(v); !why.empty()) c.fail(h + ".loads", why);
     }
-    for (const auto& [section, base, wanted, key] :
-         {std::tuple{&oedometer_size, o, wanted_oedometer, "config"},
-          std::tuple{&oedometer_size, o, wanted_oedometer && s == "full", "settle_config"},
-          std::tuple{&shear_size, h, wanted_shear, "config"}})
-      if (const auto path = (*section)[key].value<std::string>(); wanted && path)
-        c.existing_file(base + "." + key, source, *path);
+    if (const auto path = shear_size["config"].value<std::string>(); wanted_shear && path)
+      c.existing_file(h + ".config", source, *path);
   }
   return doc;
 }
