@@ -205,6 +205,12 @@ def read_config(path, scenario):
             "fit_force_max": float(o.get("fit_force_max", 29.3e3)),
             "packing_file": o.get("packing_file", ""),
         }
+        # Load-unload cycles (oedometer.cycles) are colza's alone: YADE's script runs one
+        # loading, so a config asking for cycles is refused rather than run as something else.
+        for key in ("cycles", "modulus_stresses"):
+            if key in o:
+                raise ConfigError(f"oedometer.{key}: load-unload cycles are not in the YADE oedometer script "
+                                  "(yade-scripts/run_oedometer.py runs a single loading)")
         pf = c["oedometer"]["packing_file"]
         if not pf:
             raise ConfigError("the YADE oedometer starts from a settled packing: set oedometer.packing_file")
