@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
+#include <set>
+#include <string>
 #include <vector>
 
 #include "contact/generic_law.hpp"
@@ -339,6 +341,55 @@ double balance_drift(const ContactModel& model, double dt) {
 
 }  // namespace
 
+namespace {
+
+// One instance of every implementation of every slot, with parameters that make it act
+// (the energy test runs every combination of them). SlotListsCoverTheRegistry checks that
+// every name registered in contact/slot_registry.cpp has an entry, so a new row cannot be
+// left out of the generic tests.
+const std::vector<NormalSlot> kNormals = {LinearNormal{}, HertzNormal{}, WaltonBraunNormal{2.0}};
+const std::vector<TangentialSlot> kTangentials = {CoulombTangential{}, MindlinTangential{}};
+const std::vector<DampingSlot> kDampings = {NoDamping{}, ViscousDamping{0.2, 0.2}};
+const std::vector<RollingSlot> kRollings = {NoRolling{}, ElasticPlasticRolling{0.5, 0.1, RollingForm::kYade, true},
+                                            ElasticPlasticRolling{0.5, 0.1, RollingForm::kPfc, false}};
+const std::vector<BondSlot> kBonds = {NoBond{}, ContactBond{0.5, 0.5}, LoadInducedBond{0.05, 0.5, 0.5}};
+
+template <class Slot>
+std::set<std::string> names_in(const std::vector<Slot>& list) {
+  std::set<std::string> names;
+  for (const Slot& s : list) std::visit([&](const auto& impl) { names.insert(impl.kName); }, s);
+  return names;
+}
+std::set<std::string> as_set(const std::vector<std::string>& v) { return {v.begin(), v.end()}; }
+
+}  // namespace
+
+TEST(Mechanisms, SlotListsCoverTheRegistry) {
+  EXPECT_EQ(names_in(kNormals), as_set(normal_slot_names()));
+  EXPECT_EQ(names_in(kTangentials), as_set(tangential_slot_names()));
+  EXPECT_EQ(names_in(kDampings), as_set(damping_slot_names()));
+  EXPECT_EQ(names_in(kRollings), as_set(rolling_slot_names()));
+  EXPECT_EQ(names_in(kBonds), as_set(bond_slot_names()));
+}
+
+// Every combination of the slots' lists: each double of the layout gets the sign its slot
+// declares (the rolling moment -1, all others +1), and the stride is the sum of the slots'.
+TEST(Mechanisms, EveryCombinationsLayoutHasItsSlotsDoublesAndSigns) {
+  for (const auto& normal : kNormals)
+    for (const auto& tangential : kTangentials)
+      for (const auto& rolling : kRollings)
+        for (const auto& bond : kBonds) {
+          const ContactModel m = model_with(normal, tangential, NoDamping{}, rolling, bond);
+          const SlotStateLayout l = slot_state_layout(m);
+          const auto doubles = [](const auto& slot) {
+            return std::visit([](const auto& impl) { return static_cast<std::size_t>(impl.kStateDoubles); }, slot);
+          };
+          ASSERT_EQ(l.stride, doubles(normal) + doubles(tangential) + doubles(rolling) + doubles(bond));
+          for (std::size_t d = 0; d < l.stride; ++d)
+            EXPECT_EQ(l.swap_sign[d], d >= l.rolling && d < l.bond ? -1.0 : 1.0) << describe(m) << ", double " << d;
+        }
+}
+
 // Energy balance with local damping off, for every combination of the slots (108): stored
 // energy (the slots' own springs) plus every ledger channel is constant to first order in dt.
 // Each channel's booking is first-order accurate under leapfrog (the slip and cap formulas,
@@ -353,12 +404,11 @@ double balance_drift(const ContactModel& model, double dt) {
 // oblique collision that last one halves exactly with dt (1.3e-2, 5.4e-3, 2.5e-3 at 1e-7,
 // 5e-8, 2.5e-8 s).
 TEST(Mechanisms, EnergyBalancesForEveryCombinationOfSlots) {
-  const std::vector<NormalSlot> normals = {LinearNormal{}, HertzNormal{}, WaltonBraunNormal{2.0}};
-  const std::vector<TangentialSlot> tangentials = {CoulombTangential{}, MindlinTangential{}};
-  const std::vector<DampingSlot> dampings = {NoDamping{}, ViscousDamping{0.2, 0.2}};
-  const std::vector<RollingSlot> rollings = {NoRolling{}, ElasticPlasticRolling{0.5, 0.1, RollingForm::kYade, true},
-                                             ElasticPlasticRolling{0.5, 0.1, RollingForm::kPfc, false}};
-  const std::vector<BondSlot> bonds = {NoBond{}, ContactBond{0.5, 0.5}, LoadInducedBond{0.05, 0.5, 0.5}};
+  const auto& normals = kNormals;
+  const auto& tangentials = kTangentials;
+  const auto& dampings = kDampings;
+  const auto& rollings = kRollings;
+  const auto& bonds = kBonds;
   int combinations = 0;
   for (const auto& normal : normals)
     for (const auto& tangential : tangentials)
