@@ -42,6 +42,9 @@ class ContactStore {
   // starts every row at zero (the Stepper sets its model's layout when it prepares a world).
   void set_slot_state_layout(const SlotStateLayout& layout);
   const SlotStateLayout& slot_state_layout() const { return layout_; }
+  // The slot-state row of particle pair c or wall pair c (kZeroSlotRow when the layout has none).
+  const double* particle_pair_state(std::size_t c) const { return row(particle_pairs.slot_state, c); }
+  const double* wall_pair_state(std::size_t c) const { return row(wall_pairs.slot_state, c); }
 
   // Rename particles after removal/reordering (old_to_new[i] == kRemoved drops the pair).
   void renumber_particles(const std::vector<Index>& old_to_new);
@@ -59,6 +62,9 @@ class ContactStore {
   std::size_t bonded_contacts() const;
 
  private:
+  const double* row(const std::vector<double>& rows, std::size_t c) const {
+    return layout_.stride == 0 ? kZeroSlotRow : rows.data() + c * layout_.stride;
+  }
   std::uint64_t revision_ = 0;
   SlotStateLayout layout_;
 };

@@ -5,6 +5,7 @@
 // physics -> law pipeline.
 #pragma once
 #include "core/materials.hpp"
+#include "core/particles.hpp"
 #include "core/types.hpp"
 
 namespace colza {
@@ -20,6 +21,21 @@ struct PairContext {
   double dt = 0.0;                // s
   bool with_wall = false;
 };
+
+// The context of particle pair (i, j): R* = R1 R2 / (R1 + R2), m* = m1 m2 / (m1 + m2); for
+// a particle with itself (the time step's contact of a body that has none) R / 2 and m / 2.
+inline PairContext particle_pair_context(const ParticleArrays& p, const PairTable& pairs, Index i, Index j,
+                                         double dt) {
+  const double ri = p.radius[i], rj = p.radius[j], mi = p.mass[i], mj = p.mass[j];
+  return {pairs.particle_particle(p.material[i], p.material[j]), ri, rj, ri * rj / (ri + rj), mi * mj / (mi + mj),
+          dt, false};
+}
+// The context of particle i against a wall of material `wall_material`: R1 = R2 = R* = R, m* = m.
+inline PairContext wall_pair_context(const ParticleArrays& p, const PairTable& pairs, Index i,
+                                     std::size_t wall_material, double dt) {
+  const double r = p.radius[i];
+  return {pairs.particle_wall(p.material[i], wall_material), r, r, r, p.mass[i], dt, true};
+}
 
 struct ContactKinematics {
   Vec3 normal;           // unit normal n from body 1 to body 2

@@ -4,12 +4,18 @@
 // declares its doubles (kStateDoubles) and how they change when a pair's bodies swap
 // (a moment on body 2 changes sign, a largest overlap does not).
 #pragma once
+#include <cassert>
 #include <cstddef>
 #include <variant>
 #include <vector>
 #include "contact/slots.hpp"
 
 namespace colza {
+
+// The longest row any combination has (Walton-Braun 1, Mindlin 1, rolling 3, load-induced
+// cohesion 2), and a row of zeros for a contact that has none yet.
+inline constexpr std::size_t kMaxSlotStride = 8;
+inline constexpr double kZeroSlotRow[kMaxSlotStride] = {};
 
 struct SlotStateLayout {
   std::size_t stride = 0;   // doubles per pair
@@ -37,6 +43,7 @@ inline SlotStateLayout slot_state_layout(const ContactModel& m) {
   l.rolling = l.tangential + doubles(m.tangential);
   l.bond = l.rolling + doubles(m.rolling);
   l.stride = l.bond + doubles(m.bond);
+  assert(l.stride <= kMaxSlotStride);
   l.swap_sign.assign(l.stride, 1.0);
   for (std::size_t k = l.rolling; k < l.bond; ++k) l.swap_sign[k] = -1.0;
   return l;

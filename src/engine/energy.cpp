@@ -43,30 +43,8 @@ double energy_balance(const EnergySnapshot& e, const EnergyLedger& l) {
 
 namespace {
 
-// Springs of the baseline: 1/2 Fn^2 / Kn and 1/2 |Fs|^2 / Ks per contact.
-void add_baseline_springs(const World& world, const PairTable& pairs, EnergySnapshot& e) {
-  const ParticleArrays& p = world.particles;
-  const LinearNormal normal;
-  const CoulombTangential tangential;
-  const auto& pp = world.contacts.particle_pairs;
-  for (std::size_t c = 0; c < pp.size(); ++c) {
-    const ContactHistory& h = pp.history[c];
-    if (!h.touching) continue;
-    const PairParameters& q = pairs.particle_particle(p.material[pp.first[c]], p.material[pp.second[c]]);
-    e.elastic_normal += normal.energy(q, h.normal_force);
-    e.elastic_shear += tangential.energy(q, h.shear_force);
-  }
-  const auto& pw = world.contacts.wall_pairs;
-  for (std::size_t c = 0; c < pw.size(); ++c) {
-    const ContactHistory& h = pw.history[c];
-    if (!h.touching) continue;
-    const PairParameters& q = pairs.particle_wall(p.material[pw.particle[c]], world.walls[pw.wall[c]].material);
-    e.elastic_normal += normal.energy(q, h.normal_force);
-    e.elastic_shear += tangential.energy(q, h.shear_force);
-  }
-}
-
-// Springs of any model, each slot stating its own (contact/generic_law.hpp).
+// The springs' stored energy, each slot stating its own (contact/generic_law.hpp): for the
+// paper's law 1/2 Fn^2 / Kn and 1/2 |Fs|^2 / Ks per contact.
 void add_slot_springs(const World& world, const ContactModel& model, const PairTable& pairs, EnergySnapshot& e) {
   const ParticleArrays& p = world.particles;
   const SlotStateLayout& layout = world.contacts.slot_state_layout();
@@ -78,20 +56,14 @@ void add_slot_springs(const World& world, const ContactModel& model, const PairT
   const auto& pp = world.contacts.particle_pairs;
   for (std::size_t c = 0; c < pp.size(); ++c) {
     if (!pp.history[c].touching) continue;
-    const Index i = pp.first[c], j = pp.second[c];
-    const double ri = p.radius[i], rj = p.radius[j], mi = p.mass[i], mj = p.mass[j];
-    const PairContext ctx{pairs.particle_particle(p.material[i], p.material[j]), ri, rj, ri * rj / (ri + rj),
-                          mi * mj / (mi + mj), 0.0, false};
-    add(stored_contact_energy(model, layout, ctx, pp.history[c], pp.slot_state.data() + c * layout.stride));
+    const PairContext ctx = particle_pair_context(p, pairs, pp.first[c], pp.second[c], 0.0);
+    add(stored_contact_energy(model, layout, ctx, pp.history[c], world.contacts.particle_pair_state(c)));
   }
   const auto& pw = world.contacts.wall_pairs;
   for (std::size_t c = 0; c < pw.size(); ++c) {
     if (!pw.history[c].touching) continue;
-    const Index i = pw.particle[c];
-    const double r = p.radius[i];
-    const PairContext ctx{pairs.particle_wall(p.material[i], world.walls[pw.wall[c]].material), r, r, r, p.mass[i],
-                          0.0, true};
-    add(stored_contact_energy(model, layout, ctx, pw.history[c], pw.slot_state.data() + c * layout.stride));
+    const PairContext ctx = wall_pair_context(p, pairs, pw.particle[c], world.walls[pw.wall[c]].material, 0.0);
+    add(stored_contact_energy(model, layout, ctx, pw.history[c], world.contacts.wall_pair_state(c)));
   }
 }
 
@@ -105,8 +77,7 @@ EnergySnapshot measure_energy(const World& world, const PhysicsSettings& physics
                  0.5 * p.inertia[i] * p.angular_velocity[i].squaredNorm();
     e.gravitational -= p.mass[i] * physics.integrator.gravity.dot(p.position[i]);
   }
-  if (is_baseline(physics.model)) add_baseline_springs(world, pairs, e);
-  else add_slot_springs(world, physics.model, pairs, e);
+  add_slot_springs(world, physics.model, pairs, e);
   return e;
 }
 

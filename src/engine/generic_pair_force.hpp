@@ -11,12 +11,10 @@
 
 namespace colza::detail {
 
-// A contact's history and slot-state row as they were before the law ran (the longest row:
-// Walton-Braun, Mindlin, rolling and load-induced cohesion, 7 doubles).
+// A contact's history and slot-state row as they were before the law ran.
 struct SlotRow {
-  static constexpr std::size_t kMaxStride = 8;
   ContactHistory history;
-  double state[kMaxStride] = {};
+  double state[kMaxSlotStride] = {};
 };
 inline SlotRow save_row(const ContactHistory& h, const double* state, std::size_t stride) {
   SlotRow r;
@@ -27,15 +25,10 @@ inline SlotRow save_row(const ContactHistory& h, const double* state, std::size_
 
 // The stored energy of a contact that vanished, from its saved row (J): rare, so kept out of
 // the force loop's code (it inlines everything else).
-[[gnu::noinline, gnu::cold]] inline double vanished_energy(const ContactModel& model, const SlotStateLayout& layout,
-                                                           const PairContext& c, const SlotRow& saved) {
-  const ContactEnergy e = stored_contact_energy(model, layout, c, saved.history, saved.state);
-  return e.normal + e.shear + e.rolling;
-}
-[[gnu::noinline, gnu::cold]] inline double vanished_shear_energy(const ContactModel& model,
-                                                                 const SlotStateLayout& layout, const PairContext& c,
-                                                                 const SlotRow& saved) {
-  return stored_contact_energy(model, layout, c, saved.history, saved.state).shear;
+[[gnu::noinline, gnu::cold]] inline ContactEnergy vanished_energy(const ContactModel& model,
+                                                                  const SlotStateLayout& layout, const PairContext& c,
+                                                                  const SlotRow& saved) {
+  return stored_contact_energy(model, layout, c, saved.history, saved.state);
 }
 
 // The generic law's dissipation channels of one outcome go to the sink.
@@ -61,10 +54,7 @@ inline bool generic_particle_pair_force(const ContactModel& model, const SlotSta
   ContactKinematics k = pair_kinematics(g, dt, half_dt, h.normal);
   k.normal_velocity = dot(g.rel_vel, g.n);
   k.rotation_increment = vec((g.wj - g.wi) * dt);
-  const double ri = p.radius[i], rj = p.radius[j];
-  const PairParameters& q = pairs.particle_particle(p.material[i], p.material[j]);
-  const double mi = p.mass[i], mj = p.mass[j];
-  const PairContext c{q, ri, rj, ri * rj / (ri + rj), mi * mj / (mi + mj), dt, false};
+  const PairContext c = particle_pair_context(p, pairs, i, j, dt);
   // The state before the law runs: its stored energy is lost if the contact vanishes this
   // step (evaluated only then).
   const bool was_touching = h.touching != 0;
@@ -72,14 +62,14 @@ inline bool generic_particle_pair_force(const ContactModel& model, const SlotSta
   if (was_touching) saved = save_row(h, state, layout.stride);
   const ContactOutcome out = evaluate_contact_generic(model, layout, c, k, h, state, bond_new_contacts);
   if (!out.carries_force) {
-    if (was_touching) sink.broken(vanished_energy(model, layout, c, saved));
+    if (was_touching) {
+      const ContactEnergy e = vanished_energy(model, layout, c, saved);
+      sink.broken(e.normal + e.shear + e.rolling);
+    }
     sink.event(out.event);
     return false;
   }
-  sink.event(out.event);
-  sink.slip(out.slip_dissipation);
-  sink.released(out.bond_break_energy);
-  sink.broken(out.normal_energy_lost);
+  book_outcome(out, sink);
   book_mechanisms(out, sink);
   f = v3(out.force_on_2);
   t_i = cross(g.arm_i, f);
@@ -98,10 +88,8 @@ inline bool generic_wall_pair_force(const ContactModel& model, const SlotStateLa
                                     const ParticleArrays& p, const Wall& wall, const PairTable& pairs, double dt,
                                     double half_dt, Index i, ContactHistory& h, double* state, Vec3& force,
                                     Vec3& torque, Sink& sink) {
-  const PairParameters& q = pairs.particle_wall(p.material[i], wall.material);
-  const double r = p.radius[i];
-  const PairContext c{q, r, r, r, p.mass[i], dt, true};
-  const WallContactGeometry g = wall_sphere_geometry(wall, p.position[i], r);
+  const PairContext c = wall_pair_context(p, pairs, i, wall.material, dt);
+  const WallContactGeometry g = wall_sphere_geometry(wall, p.position[i], c.radius_2);
   if (!g.in_range || (!h.touching && g.overlap < 0.0)) {
     if (h.touching) {
       const bool handed_on = wall.shape == WallShape::kRectangle;
@@ -124,7 +112,7 @@ inline bool generic_wall_pair_force(const ContactModel& model, const SlotStateLa
   if (mindlin) saved = save_row(h, state, layout.stride);
   const ContactOutcome out = evaluate_contact_generic(model, layout, c, k, h, state, false);
   if (!out.carries_force) {
-    if (mindlin) sink.stiffness_change(vanished_shear_energy(model, layout, c, saved));
+    if (mindlin) sink.stiffness_change(vanished_energy(model, layout, c, saved).shear);
     return false;
   }
   sink.slip(out.slip_dissipation);

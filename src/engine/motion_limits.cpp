@@ -9,42 +9,33 @@ namespace colza {
 
 DeepestOverlap deepest_overlap(const ParticleArrays& p, const std::vector<Wall>& walls, const ContactStore& contacts,
                                const PairTable& pairs, const ContactModel& model) {
-  const bool linear = std::holds_alternative<LinearNormal>(model.normal);
   const SlotStateLayout& layout = contacts.slot_state_layout();
   DeepestOverlap deepest;
-  // The overlap of a contact whose normal force is fn (N): Fn / Kn for the linear law, the
-  // normal slot's own reading otherwise.
+  // The overlap of a contact whose normal force is fn (N), as its normal law reads it (Fn / Kn
+  // for the linear law).
   const auto consider = [&](double normal_force, const PairContext& c, const double* state, double radius,
                             bool with_wall, std::size_t a, std::size_t b) {
     if (!(normal_force > 0.0)) return;
     const double overlap =
-        linear ? normal_force / c.q.kn
-               : std::visit([&](const auto& n) { return n.overlap(c, normal_force, state + layout.normal); },
-                            model.normal);
+        std::visit([&](const auto& n) { return n.overlap(c, normal_force, state + layout.normal); }, model.normal);
     const double ratio = overlap / radius;
     if (ratio > deepest.ratio) deepest = {ratio, overlap, with_wall, a, b};
-  };
-  const auto state_of = [&](const std::vector<double>& rows, std::size_t c) -> const double* {
-    return layout.stride == 0 ? nullptr : rows.data() + c * layout.stride;
   };
   const ParticlePairList& pp = contacts.particle_pairs;
   for (std::size_t c = 0; c < pp.size(); ++c) {
     const ContactHistory& h = pp.history[c];
     if (!h.touching) continue;
     const Index i = pp.first[c], j = pp.second[c];
-    const double ri = p.radius[i], rj = p.radius[j];
-    const PairContext ctx{pairs.particle_particle(p.material[i], p.material[j]), ri, rj, ri * rj / (ri + rj), 0.0,
-                          0.0, false};
-    consider(h.normal_force, ctx, state_of(pp.slot_state, c), std::min(ri, rj), false, i, j);
+    const PairContext ctx = particle_pair_context(p, pairs, i, j, 0.0);
+    consider(h.normal_force, ctx, contacts.particle_pair_state(c), std::min(ctx.radius_1, ctx.radius_2), false, i, j);
   }
   const WallPairList& pw = contacts.wall_pairs;
   for (std::size_t c = 0; c < pw.size(); ++c) {
     const ContactHistory& h = pw.history[c];
     if (!h.touching) continue;
     const Index i = pw.particle[c], w = pw.wall[c];
-    const double r = p.radius[i];
-    const PairContext ctx{pairs.particle_wall(p.material[i], walls[w].material), r, r, r, 0.0, 0.0, true};
-    consider(h.normal_force, ctx, state_of(pw.slot_state, c), r, true, i, w);
+    const PairContext ctx = wall_pair_context(p, pairs, i, walls[w].material, 0.0);
+    consider(h.normal_force, ctx, contacts.wall_pair_state(c), ctx.radius_2, true, i, w);
   }
   return deepest;
 }

@@ -87,6 +87,16 @@ struct PairGeometry {
   return k;
 }
 
+// What a pair's outcome books besides its force: the event, the slip, the shear-spring energy
+// a bond break released and the normal spring's energy lost with it, in this order.
+template <class Sink>
+[[gnu::always_inline]] inline void book_outcome(const ContactOutcome& out, Sink& sink) {
+  sink.event(out.event);
+  sink.slip(out.slip_dissipation);
+  sink.released(out.bond_break_energy);
+  sink.broken(out.normal_energy_lost);
+}
+
 // Geometry and contact law of one particle pair (i < j): the arithmetic of the reference
 // force loop, expression for expression. Returns false when the pair carries no force;
 // otherwise f = force on body 2 (j), and arm_i, arm_j the lever arms.
@@ -114,10 +124,7 @@ template <class Normal, class Tangential, class Bond, class Sink>
     sink.event(out.event);
     return false;
   }
-  sink.event(out.event);
-  sink.slip(out.slip_dissipation);
-  sink.released(out.bond_break_energy);
-  sink.broken(out.normal_energy_lost);
+  book_outcome(out, sink);
   f = v3(out.force_on_2);
   return true;
 }

@@ -20,19 +20,14 @@ double wall_normal_stiffness(const World& world, const PhysicsSettings& physics,
   double k = 0.0;
   for (std::size_t c = 0; c < pw.size(); ++c) {
     if (pw.wall[c] != wall_index || !pw.history[c].touching) continue;
-    const Index i = pw.particle[c];
-    const double r = p.radius[i];
-    const PairContext ctx{pairs.particle_wall(p.material[i], wall.material), r, r, r, p.mass[i], 0.0, true};
-    const double* state = layout.stride ? pw.slot_state.data() + c * layout.stride + layout.normal : nullptr;
+    const PairContext ctx = wall_pair_context(p, pairs, pw.particle[c], wall.material, 0.0);
+    const double* state = world.contacts.wall_pair_state(c) + layout.normal;
     const double overlap =
         std::visit([&](const auto& n) { return n.overlap(ctx, pw.history[c].normal_force, state); }, model.normal);
     k += tangent(ctx, overlap, state);
   }
   if (k > 0.0 || p.size() == 0) return k;
-  static const double kNoState[8] = {};
-  const double r = p.radius[0];
-  const PairContext ctx{pairs.particle_wall(p.material[0], wall.material), r, r, r, p.mass[0], 0.0, true};
-  return tangent(ctx, 0.01 * r, kNoState);
+  return tangent(wall_pair_context(p, pairs, 0, wall.material, 0.0), 0.01 * p.radius[0], kZeroSlotRow);
 }
 
 }  // namespace colza

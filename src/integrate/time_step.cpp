@@ -42,19 +42,13 @@ double critical_time_step_of_slots(const ParticleArrays& p, const std::vector<Wa
   const std::size_t n = p.size();
   std::vector<double> k_trans(n, 0.0), k_rot(n, 0.0);
   std::vector<std::uint8_t> has_contact(n, 0);
-  const auto state_of = [&](const std::vector<double>& rows, std::size_t c) -> const double* {
-    static const double kNoState[8] = {};
-    return layout.stride == 0 || rows.empty() ? kNoState : rows.data() + c * layout.stride;
-  };
   const auto& pp = contacts.particle_pairs;
   for (std::size_t c = 0; c < pp.size(); ++c) {
     const Index i = pp.first[c], j = pp.second[c];
     if (!pp.history[c].touching && !(overlaps_count && spheres_overlap(p, i, j))) continue;
-    const double ri = p.radius[i], rj = p.radius[j], mi = p.mass[i], mj = p.mass[j];
-    const PairContext ctx{pairs.particle_particle(p.material[i], p.material[j]), ri, rj, ri * rj / (ri + rj),
-                          mi * mj / (mi + mj), 0.0, false};
-    const double overlap = ri + rj - (p.position[j] - p.position[i]).norm();
-    const TangentStiffness k = tangent_stiffness(model, ctx, overlap, state_of(pp.slot_state, c) + layout.normal);
+    const PairContext ctx = particle_pair_context(p, pairs, i, j, 0.0);
+    const double overlap = ctx.radius_1 + ctx.radius_2 - (p.position[j] - p.position[i]).norm();
+    const TangentStiffness k = tangent_stiffness(model, ctx, overlap, contacts.particle_pair_state(c) + layout.normal);
     for (const Index b : {i, j}) {
       k_trans[b] += k.normal + k.shear;
       k_rot[b] += k.shear * p.radius[b] * p.radius[b] + k.rolling;
@@ -66,22 +60,20 @@ double critical_time_step_of_slots(const ParticleArrays& p, const std::vector<Wa
     const Index i = pw.particle[c];
     const Wall& wall = walls[pw.wall[c]];
     if (!pw.history[c].touching && !(overlaps_count && sphere_overlaps_wall(p, i, wall))) continue;
-    const double r = p.radius[i];
-    const PairContext ctx{pairs.particle_wall(p.material[i], wall.material), r, r, r, p.mass[i], 0.0, true};
+    const PairContext ctx = wall_pair_context(p, pairs, i, wall.material, 0.0);
+    const double r = ctx.radius_2;
     const double overlap = wall_sphere_geometry(wall, p.position[i], r).overlap;
-    const TangentStiffness k = tangent_stiffness(model, ctx, overlap, state_of(pw.slot_state, c) + layout.normal);
+    const TangentStiffness k = tangent_stiffness(model, ctx, overlap, contacts.wall_pair_state(c) + layout.normal);
     k_trans[i] += k.normal + k.shear;
     k_rot[i] += k.shear * r * r + k.rolling;
     has_contact[i] = 1;
   }
-  static const double kNoState[8] = {};
   double dt = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < n; ++i) {
     const double r = p.radius[i];
     if (!has_contact[i]) {  // one contact with its own material at 1 % of its radius
-      const PairContext ctx{pairs.particle_particle(p.material[i], p.material[i]), r, r, 0.5 * r, 0.5 * p.mass[i],
-                            0.0, false};
-      const TangentStiffness k = tangent_stiffness(model, ctx, 0.01 * r, kNoState);
+      const PairContext ctx = particle_pair_context(p, pairs, i, i, 0.0);
+      const TangentStiffness k = tangent_stiffness(model, ctx, 0.01 * r, kZeroSlotRow);
       k_trans[i] = k.normal + k.shear;
       k_rot[i] = k.shear * r * r + k.rolling;
     }
