@@ -1,0 +1,291 @@
+#include "diagnose/diagnosis.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <set>
+
+#include "core/concurrent.hpp"
+#include "diagnose/held_out.hpp"
+#include "diagnose/model_comparison.hpp"
+#include "diagnose/verdict.hpp"
+#include "io/format_number.hpp"
+
+namespace colza::diagnose {
+
+using calibration::CalibrationError;
+using calibration::Parameter;
+
+namespace {
+
+std::string fmt(double v) { return format_significant(v, 4); }
+
+Eigen::VectorXd measured_values(const DiagnosisProblem& p) {
+  Eigen::VectorXd m(static_cast<Eigen::Index>(p.features.size()));
+  for (std::size_t i = 0; i < p.features.size(); ++i) m[static_cast<Eigen::Index>(i)] = p.features[i].measured;
+  return m;
+}
+
+Eigen::VectorXd measured_sd(const DiagnosisProblem& p) {
+  Eigen::VectorXd u(static_cast<Eigen::Index>(p.features.size()));
+  for (std::size_t i = 0; i < p.features.size(); ++i) u[static_cast<Eigen::Index>(i)] = p.features[i].uncertainty;
+  return u;
+}
+
+// A forward model that counts its runs and evaluates a batch of (point, realisation) side by side.
+class CountingModel {
+ public:
+  CountingModel(const DiagnosisForward& model, int jobs) : model_(model), jobs_(jobs) {}
+  Eigen::VectorXd operator()(const ModelPoint& x, int realisation) {
+    ++runs_;
+    return model_(x, realisation);
+  }
+  std::vector<Eigen::VectorXd> batch(const std::vector<std::pair<ModelPoint, int>>& jobs) {
+    std::vector<Eigen::VectorXd> out(jobs.size());
+    run_concurrently(jobs.size(), jobs_, [&](std::size_t k) { out[k] = (*this)(jobs[k].first, jobs[k].second); });
+    return out;
+  }
+  int runs() const { return runs_.load(); }
+  int jobs() const { return jobs_; }
+
+ private:
+  const DiagnosisForward& model_;
+  int jobs_;
+  std::atomic<int> runs_{0};
+};
+
+// Realisations 1..n of one point.
+std::vector<Eigen::VectorXd> realisations(CountingModel& model, const ModelPoint& x, int n) {
+  std::vector<std::pair<ModelPoint, int>> jobs;
+  for (int k = 1; k <= n; ++k) jobs.emplace_back(x, k);
+  return model.batch(jobs);
+}
+
+// The calibration problem over `parameters`, the features as targets with the noise `sd`
+// (measurement and realisation scatter) as their uncertainty, so that the solver weighs
+// features by what a run can resolve.
+calibration::Problem calibration_problem(const DiagnosisProblem& p, const std::vector<Parameter>& parameters,
+                                         const Eigen::VectorXd& sd, std::vector<Eigen::VectorXd> start) {
+  calibration::Problem c;
+  c.parameters = parameters;
+  for (std::size_t i = 0; i < p.features.size(); ++i)
+    c.targets.push_back({p.features[i].name, p.features[i].unit, p.features[i].measured, sd[static_cast<Eigen::Index>(i)]});
+  c.target_correlation = p.measured_correlation;
+  c.surface = calibration::SurfaceKind::kPlane;
+  c.max_runs = std::max(p.settings.calibration_runs, static_cast<int>(parameters.size()) + 2);
+  c.sequential_start = std::move(start);
+  return c;
+}
+
+Fit judge_fit(const DiagnosisProblem& p, CountingModel& model, const std::string& name, const ModelPoint& point,
+              int fitted) {
+  Fit f;
+  f.model = name;
+  const std::vector<Eigen::VectorXd> ys = realisations(model, point, p.settings.replicates);
+  f.mean_features = mean_of(ys);
+  f.realisation_features = ys;
+  f.noise = make_noise_model(measured_sd(p), p.measured_correlation, ys);
+  f.adequacy = test_adequacy(f.noise, measured_values(p) - f.mean_features, fitted, p.settings.significance);
+  return f;
+}
+
+// Step 1: the baseline calibrated and judged.
+Fit fit_baseline(const DiagnosisProblem& p, CountingModel& model) {
+  const std::size_t np = p.parameters.size();
+  Eigen::VectorXd centre(static_cast<Eigen::Index>(np));
+  for (std::size_t j = 0; j < np; ++j)
+    centre[static_cast<Eigen::Index>(j)] = 0.5 * (p.parameters[j].lower + p.parameters[j].upper);
+  // The features' noise before the fit, from realisations at the centre: the solver's weights.
+  const std::vector<Eigen::VectorXd> at_centre = realisations(model, ModelPoint{centre}, std::max(2, std::min(4, p.settings.replicates)));
+  const NoiseModel prior = make_noise_model(measured_sd(p), p.measured_correlation, at_centre);
+  calibration::LoopOptions opt;
+  opt.jobs = model.jobs();
+  const calibration::CalibrationResult r = calibration::calibrate_sequential(
+      calibration_problem(p, p.parameters, prior.sd, {}),
+      [&](const Eigen::VectorXd& x) { return model(ModelPoint{x}, 0); }, opt);
+  Fit f = judge_fit(p, model, "baseline", ModelPoint{r.solution}, static_cast<int>(np));
+  f.parameters = r.solution;
+  f.sigma = r.sigma;
+  f.calibration_runs = static_cast<int>(r.forward_runs());
+  return f;
+}
+
+// Step 2: the baseline's sensitivities and the candidates' signatures at the fit, by common
+// random numbers (realisations 1..n of each point against the same realisations at the fit).
+void measure_signatures(const DiagnosisProblem& p, CountingModel& model, const Fit& base,
+                        const std::vector<Eigen::VectorXd>& at_fit, DiagnosisResult& out) {
+  const int n = std::min(p.settings.signature_seeds, static_cast<int>(at_fit.size()));
+  const std::vector<Eigen::VectorXd> neutral_baseline(at_fit.begin(), at_fit.begin() + n);
+  const Eigen::VectorXd& x = base.parameters;
+  std::vector<std::pair<ModelPoint, int>> jobs;
+  std::vector<double> steps;
+  for (std::size_t j = 0; j < p.parameters.size(); ++j) {
+    const Parameter& par = p.parameters[j];
+    double h = p.settings.sensitivity_step * (par.upper - par.lower);
+    if (x[static_cast<Eigen::Index>(j)] + h > par.upper) h = -h;
+    steps.push_back(h);
+    Eigen::VectorXd xs = x;
+    xs[static_cast<Eigen::Index>(j)] += h;
+    for (int s = 1; s <= n; ++s) jobs.emplace_back(ModelPoint{xs}, s);
+  }
+  for (std::size_t k = 0; k < p.candidates.size(); ++k) {
+    const Candidate& c = p.candidates[k];
+    for (int s = 1; s <= n; ++s) jobs.emplace_back(ModelPoint{x, static_cast<int>(k), c.neutral()}, s);
+    for (int s = 1; s <= n; ++s) jobs.emplace_back(ModelPoint{x, static_cast<int>(k), c.probe}, s);
+  }
+  const std::vector<Eigen::VectorXd> ys = model.batch(jobs);
+  const auto slice = [&](std::size_t first) {
+    return std::vector<Eigen::VectorXd>(ys.begin() + static_cast<std::ptrdiff_t>(first),
+                                        ys.begin() + static_cast<std::ptrdiff_t>(first + static_cast<std::size_t>(n)));
+  };
+  out.baseline_sensitivity.resize(static_cast<Eigen::Index>(p.features.size()), static_cast<Eigen::Index>(p.parameters.size()));
+  std::size_t at = 0;
+  for (std::size_t j = 0; j < p.parameters.size(); ++j, at += static_cast<std::size_t>(n))
+    out.baseline_sensitivity.col(static_cast<Eigen::Index>(j)) = signature_from_pairs(neutral_baseline, slice(at), steps[j]).mean;
+  std::vector<double> ranges;
+  for (const Candidate& c : p.candidates) {
+    out.signatures.push_back(signature_from_pairs(slice(at), slice(at + static_cast<std::size_t>(n)), c.probe - c.neutral()));
+    at += 2 * static_cast<std::size_t>(n);
+    ranges.push_back(c.parameter.upper - c.neutral());
+  }
+  out.scores = score_candidates(base.noise, out.baseline_sensitivity, out.signatures, ranges,
+                                measured_values(p) - base.mean_features);
+}
+
+// Step 3: candidate k's extended model calibrated from the baseline's fit and judged.
+ExtendedFit extend(const DiagnosisProblem& p, CountingModel& model, const DiagnosisResult& d, int k) {
+  const Candidate& c = p.candidates[static_cast<std::size_t>(k)];
+  std::vector<Parameter> params = p.parameters;
+  params.push_back(c.parameter);
+  const std::size_t np = p.parameters.size();
+  const double range = c.parameter.upper - c.neutral();
+  // Start at the baseline's fit with the strength the score test estimates (kept off both
+  // ends of the range), and one step along each parameter toward the inside of its range.
+  Eigen::VectorXd x0(static_cast<Eigen::Index>(np + 1));
+  x0.head(static_cast<Eigen::Index>(np)) = d.baseline.parameters;
+  x0[static_cast<Eigen::Index>(np)] =
+      c.neutral() + std::clamp(d.scores.scores[static_cast<std::size_t>(k)].estimate, 0.1 * range, 0.8 * range);
+  std::vector<Eigen::VectorXd> start{x0};
+  for (std::size_t j = 0; j <= np; ++j) {
+    const Parameter& par = params[j];
+    const double h = (j < np ? p.settings.sensitivity_step : 0.15) * (par.upper - par.lower);
+    Eigen::VectorXd xs = x0;
+    xs[static_cast<Eigen::Index>(j)] += xs[static_cast<Eigen::Index>(j)] + h <= par.upper ? h : -h;
+    start.push_back(xs);
+  }
+  calibration::LoopOptions opt;
+  opt.jobs = model.jobs();
+  const auto point = [&](const Eigen::VectorXd& x) {
+    return ModelPoint{x.head(static_cast<Eigen::Index>(np)), k, x[static_cast<Eigen::Index>(np)]};
+  };
+  const calibration::CalibrationResult r = calibration::calibrate_sequential(
+      calibration_problem(p, params, d.baseline.noise.sd, start),
+      [&](const Eigen::VectorXd& x) { return model(point(x), 0); }, opt);
+  ExtendedFit e;
+  e.candidate = k;
+  e.fit = judge_fit(p, model, c.name, point(r.solution), static_cast<int>(np + 1));
+  e.fit.parameters = r.solution;
+  e.fit.sigma = r.sigma;
+  e.fit.calibration_runs = static_cast<int>(r.forward_runs());
+  e.fit.strength_at_upper_bound = r.solution[static_cast<Eigen::Index>(np)] >= c.parameter.upper - 1e-3 * range;
+  e.chi_square_common = d.baseline.noise.whiten(Eigen::VectorXd(measured_values(p) - e.fit.mean_features)).squaredNorm();
+  e.likelihood_ratio_p = boundary_likelihood_ratio_p(d.baseline.adequacy.chi_square, e.chi_square_common);
+  e.bic = bayesian_information_criterion(e.chi_square_common, static_cast<int>(np + 1),
+                                         static_cast<int>(p.features.size()));
+  return e;
+}
+
+// Step 3: each test held out, before (baseline) and after (the cause, or the best extended model).
+std::vector<HeldOutPrediction> held_out_predictions(const DiagnosisProblem& p, const DiagnosisResult& d) {
+  std::vector<std::string> tests;
+  for (const Feature& f : p.features)
+    if (std::find(tests.begin(), tests.end(), f.test) == tests.end()) tests.push_back(f.test);
+  std::vector<HeldOutPrediction> out;
+  if (tests.size() < 2) return out;
+  const ExtendedFit* after = nullptr;
+  for (const auto& e : d.extended)
+    if (e.candidate == d.verdict.cause || (d.verdict.cause < 0 && (!after || e.bic < after->bic))) after = &e;
+  const Eigen::VectorXd m = measured_values(p);
+  for (const std::string& t : tests) {
+    std::vector<bool> held;
+    for (const Feature& f : p.features) held.push_back(f.test == t);
+    HeldOutPrediction h;
+    h.test = t;
+    h.rms_before = held_out_rms(m, d.baseline.mean_features, d.baseline.noise.sd, d.baseline_sensitivity, held);
+    h.rms_after = std::numeric_limits<double>::quiet_NaN();
+    if (after) {
+      Eigen::MatrixXd a(d.baseline_sensitivity.rows(), d.baseline_sensitivity.cols() + 1);
+      a << d.baseline_sensitivity, d.signatures[static_cast<std::size_t>(after->candidate)].mean;
+      h.rms_after = held_out_rms(m, after->fit.mean_features, after->fit.noise.sd, a, held);
+    }
+    out.push_back(h);
+  }
+  return out;
+}
+
+}  // namespace
+
+void validate_diagnosis(const DiagnosisProblem& p) {
+  if (p.features.empty()) throw CalibrationError("features", "no measured features to diagnose");
+  if (p.parameters.empty()) throw CalibrationError("parameters", "the baseline has no calibrated parameter");
+  if (p.features.size() <= p.parameters.size())
+    throw CalibrationError("features", std::to_string(p.features.size()) + " features for " +
+                                           std::to_string(p.parameters.size()) + " calibrated parameters: nothing is "
+                                           "left to judge the model with (need more features than parameters)");
+  std::set<std::string> names;
+  for (const Feature& f : p.features) {
+    if (!names.insert(f.name).second) throw CalibrationError("features", "feature " + f.name + " appears twice");
+    if (!std::isfinite(f.measured)) throw CalibrationError(f.name, "the measured value is not a finite number");
+    if (!(f.uncertainty > 0.0)) throw CalibrationError(f.name, "the measured uncertainty must be > 0");
+  }
+  for (const Parameter& par : p.parameters)
+    if (!(par.upper > par.lower)) throw CalibrationError(par.key, "needs lower < upper");
+  for (const Candidate& c : p.candidates) {
+    if (!(c.parameter.upper > c.parameter.lower))
+      throw CalibrationError(c.name, "its parameter's range must run from the neutral value up (lower < upper)");
+    if (!(c.probe > c.neutral() && c.probe <= c.parameter.upper))
+      throw CalibrationError(c.name, "its probe must lie in (neutral, upper] = (" + fmt(c.neutral()) + ", " +
+                                         fmt(c.parameter.upper) + "], got " + fmt(c.probe));
+  }
+  const DiagnosisSettings& s = p.settings;
+  if (s.replicates < 2) throw CalibrationError("replicates", "needs at least 2 realisations to measure the scatter");
+  if (s.signature_seeds < 1 || s.signature_seeds > s.replicates)
+    throw CalibrationError("signature_seeds", "must lie between 1 and replicates (" + std::to_string(s.replicates) + ")");
+  if (!(s.significance > 0.0 && s.significance < 0.5)) throw CalibrationError("significance", "must lie in (0, 0.5)");
+  if (!(s.ambiguity_cosine > 0.0 && s.ambiguity_cosine < 1.0))
+    throw CalibrationError("ambiguity_cosine", "must lie in (0, 1)");
+}
+
+
+DiagnosisResult diagnose(const DiagnosisProblem& p, const DiagnosisForward& forward) {
+  validate_diagnosis(p);
+  const auto say = [&](const std::string& line) {
+    if (p.settings.on_progress) p.settings.on_progress(line);
+  };
+  CountingModel model(forward, std::max(1, p.settings.jobs));
+  DiagnosisResult d;
+  say("step 1: calibrating the baseline and judging it against the data");
+  d.baseline = fit_baseline(p, model);
+  const int nf = static_cast<int>(p.features.size()), np = static_cast<int>(p.parameters.size());
+  d.baseline_bic = bayesian_information_criterion(d.baseline.adequacy.chi_square, np, nf);
+  if (p.settings.replicates < 8)
+    d.warnings.push_back("the scatter comes from " + std::to_string(p.settings.replicates) +
+                         " realisations (fewer than 8): the noise and every test built on it are rough");
+  if (d.baseline.adequacy.passes || p.candidates.empty()) {
+    d.verdict = decide(p, d.baseline, d.baseline_bic, d.scores, d.extended);
+    d.forward_runs = model.runs();
+    return d;
+  }
+  say("step 2: the candidates' signatures and score tests");
+  measure_signatures(p, model, d.baseline, d.baseline.realisation_features, d);
+  const std::vector<int> significant = significant_candidates(d.scores, p.settings.significance);
+  say("step 3: calibrating the extended models of the leading candidates");
+  for (std::size_t r = 0; r < significant.size() && static_cast<int>(r) < p.settings.extend_at_most; ++r)
+    d.extended.push_back(extend(p, model, d, significant[r]));
+  d.verdict = decide(p, d.baseline, d.baseline_bic, d.scores, d.extended);
+  d.held_out = held_out_predictions(p, d);
+  d.forward_runs = model.runs();
+  return d;
+}
+
+}  // namespace colza::diagnose

@@ -1,0 +1,133 @@
+#include "diagnose/verdict.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "diagnose/model_comparison.hpp"
+#include "io/format_number.hpp"
+
+namespace colza::diagnose {
+
+namespace {
+
+std::string fmt(double v) { return format_significant(v, 3); }
+
+bool acceptable(const ExtendedFit& e, double alpha) {
+  return e.fit.adequacy.passes && e.likelihood_ratio_p < alpha && !e.fit.strength_at_upper_bound;
+}
+
+// The features the remaining residual is largest in, as "name (z = ...)".
+std::string residual_pattern(const DiagnosisProblem& p, const Fit& f) {
+  std::vector<int> idx(static_cast<std::size_t>(f.adequacy.z.size()));
+  for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = static_cast<int>(i);
+  std::sort(idx.begin(), idx.end(), [&](int a, int b) { return std::abs(f.adequacy.z[a]) > std::abs(f.adequacy.z[b]); });
+  std::string s;
+  for (std::size_t k = 0; k < std::min<std::size_t>(3, idx.size()); ++k)
+    s += (k ? ", " : "") + p.features[static_cast<std::size_t>(idx[k])].name + " (z = " + fmt(f.adequacy.z[idx[k]]) + ")";
+  return s;
+}
+
+}  // namespace
+
+const char* to_string(VerdictKind k) {
+  switch (k) {
+    case VerdictKind::kNoDiscrepancy: return "no significant discrepancy";
+    case VerdictKind::kExplained: return "explained";
+    case VerdictKind::kAmbiguous: return "ambiguous";
+    case VerdictKind::kUnexplained: return "unexplained";
+  }
+  return "?";
+}
+
+std::vector<int> significant_candidates(const ScoreTests& scores, double alpha) {
+  std::vector<int> s;
+  for (std::size_t k = 0; k < scores.scores.size(); ++k)
+    if (scores.scores[k].adjusted_p < alpha) s.push_back(static_cast<int>(k));
+  std::sort(s.begin(), s.end(), [&](int a, int b) { return scores.scores[a].z > scores.scores[b].z; });
+  return s;
+}
+
+Verdict decide(const DiagnosisProblem& p, const Fit& baseline, double baseline_bic, const ScoreTests& scores,
+               const std::vector<ExtendedFit>& extended) {
+  const double alpha = p.settings.significance;
+  const auto& cands = p.candidates;
+  Verdict v;
+  const AdequacyTest& a = baseline.adequacy;
+  const std::string adequacy_text = "chi2 = " + fmt(a.chi_square) + " on " + std::to_string(a.degrees_of_freedom) +
+                                    " degrees of freedom, p = " + fmt(a.p_value);
+  if (a.passes) {
+    v.kind = VerdictKind::kNoDiscrepancy;
+    v.text = "No significant discrepancy: the calibrated baseline reproduces every feature within its noise (" +
+             adequacy_text + " >= alpha = " + fmt(alpha) + "). The data give no reason to extend the model.";
+    return v;
+  }
+  const std::vector<int> significant = significant_candidates(scores, alpha);
+  if (significant.empty()) {
+    v.kind = VerdictKind::kUnexplained;
+    v.text = "Unexplained: the baseline misses the data (" + adequacy_text + ") and no candidate points along the "
+             "residual its own parameters cannot absorb (every adjusted score-test p >= " + fmt(alpha) +
+             "). The largest residuals: " + residual_pattern(p, baseline) + ".";
+    return v;
+  }
+  std::vector<const ExtendedFit*> ok;
+  for (const auto& e : extended)
+    if (acceptable(e, alpha)) ok.push_back(&e);
+  std::sort(ok.begin(), ok.end(), [](const ExtendedFit* x, const ExtendedFit* y) { return x->bic < y->bic; });
+  if (ok.empty()) {
+    v.kind = VerdictKind::kUnexplained;
+    std::string why;
+    for (const auto& e : extended) {
+      const std::string& n = cands[static_cast<std::size_t>(e.candidate)].name;
+      if (e.fit.strength_at_upper_bound)
+        why += " " + n + " would need more than its physical range (its strength stops at the top, " +
+               fmt(cands[static_cast<std::size_t>(e.candidate)].parameter.upper) + ");";
+      else if (!e.fit.adequacy.passes)
+        why += " with " + n + " the misfit falls from chi2 = " + fmt(baseline.adequacy.chi_square) + " to " +
+               fmt(e.fit.adequacy.chi_square) + " but stays significant (p = " + fmt(e.fit.adequacy.p_value) + ");";
+      else
+        why += " " + n + " does not improve the fit significantly (likelihood ratio p = " + fmt(e.likelihood_ratio_p) +
+               ");";
+    }
+    v.text = "Unexplained: the baseline misses the data (" + adequacy_text + ");" + why +
+             " The remaining residual is largest in " +
+             residual_pattern(p, extended.empty() ? baseline : extended.front().fit) + ".";
+    return v;
+  }
+  const ExtendedFit& best = *ok.front();
+  v.cause = best.candidate;
+  const Candidate& x = cands[static_cast<std::size_t>(best.candidate)];
+  // The runner-up: a significant candidate whose projected signature the data cannot tell
+  // from the cause's (a BIC difference between their fits is then calibration noise), or
+  // another acceptable extended model within "positive evidence" of the best's BIC.
+  for (int k : significant)
+    if (k != best.candidate && std::abs(scores.cosine(best.candidate, k)) >= p.settings.ambiguity_cosine) {
+      v.runner_up = k;
+      break;
+    }
+  if (v.runner_up < 0)
+    for (const ExtendedFit* e : ok)
+      if (e != &best && e->bic - best.bic < kPositiveEvidence) {
+        v.runner_up = e->candidate;
+        break;
+      }
+  if (v.runner_up >= 0) {
+    const Candidate& y = cands[static_cast<std::size_t>(v.runner_up)];
+    v.kind = VerdictKind::kAmbiguous;
+    v.experiment = separating_experiment(x.kind, y.kind);
+    v.text = "Ambiguous between " + x.name + " and " + y.name + ": both account for the discrepancy (" +
+             adequacy_text + " for the baseline); their signatures on these features have a cosine of " +
+             fmt(scores.cosine(best.candidate, v.runner_up)) + ". To tell them apart: " + v.experiment + ".";
+    return v;
+  }
+  v.kind = VerdictKind::kExplained;
+  const std::size_t j = static_cast<std::size_t>(best.fit.parameters.size() - 1);
+  v.text = "Explained by " + x.name + ": the baseline misses the data (" + adequacy_text + "); with " +
+           x.parameter.name + " = " + fmt(best.fit.parameters[static_cast<Eigen::Index>(j)]) + " +/- " +
+           fmt(best.fit.sigma[static_cast<Eigen::Index>(j)]) + " " + x.parameter.unit +
+           " the extended model passes (chi2 = " + fmt(best.fit.adequacy.chi_square) + ", p = " +
+           fmt(best.fit.adequacy.p_value) + "), the likelihood ratio against the baseline has p = " +
+           fmt(best.likelihood_ratio_p) + " and its BIC is " + fmt(best.bic) + " against the baseline's " + fmt(baseline_bic) + ".";
+  return v;
+}
+
+}  // namespace colza::diagnose
