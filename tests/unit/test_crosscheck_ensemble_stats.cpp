@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "crosscheck/curve_math.hpp"  // line_weights
+#include "analysis/curve_comparison.hpp"  // line_weights
 #include "crosscheck/ensemble_runs.hpp"
 #include "crosscheck/ensemble_stats.hpp"
 
@@ -78,7 +78,7 @@ TEST(CrosscheckEnsembleStats, TwoSidedPValueOfStudentsT) {
 // and 6 (se 2 and 2): slopes 2 and 1, se sqrt(1/4 + 1) and sqrt(1 + 1); the difference 1 has
 // se sqrt(1/4 + 1 + 1 + 1) = sqrt(13) / 2.
 TEST(CrosscheckEnsembleStats, PropagatesStandardErrorsThroughALinearCombination) {
-  const auto w = line_weights({1.0, 3.0});
+  const auto w = colza::line_weights({1.0, 3.0});
   const std::vector<SampleSummary> colza = {{8, 4.0, 0.0, 1.0}, {8, 8.0, 0.0, 2.0}};
   const std::vector<SampleSummary> yade = {{8, 4.0, 0.0, 2.0}, {8, 6.0, 0.0, 2.0}};
   const auto c = compare_linear(w.slope, colza, yade);
