@@ -16,7 +16,7 @@ namespace {
 using crosscheck::compare_linear;
 using crosscheck::compare_mean_relative;
 using crosscheck::difference_of_means;
-using crosscheck::line_weights;
+using colza::line_weights;
 using crosscheck::perturbed_packing;
 using crosscheck::SampleSummary;
 using crosscheck::summarise;
@@ -78,7 +78,7 @@ TEST(CrosscheckEnsembleStats, TwoSidedPValueOfStudentsT) {
 // and 6 (se 2 and 2): slopes 2 and 1, se sqrt(1/4 + 1) and sqrt(1 + 1); the difference 1 has
 // se sqrt(1/4 + 1 + 1 + 1) = sqrt(13) / 2.
 TEST(CrosscheckEnsembleStats, PropagatesStandardErrorsThroughALinearCombination) {
-  const auto w = colza::line_weights({1.0, 3.0});
+  const auto w = line_weights({1.0, 3.0});
   const std::vector<SampleSummary> colza = {{8, 4.0, 0.0, 1.0}, {8, 8.0, 0.0, 2.0}};
   const std::vector<SampleSummary> yade = {{8, 4.0, 0.0, 2.0}, {8, 6.0, 0.0, 2.0}};
   const auto c = compare_linear(w.slope, colza, yade);
