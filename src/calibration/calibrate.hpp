@@ -36,7 +36,8 @@
 // G diag(o) G^T, o the scatter the surfaces do not show (see above).
 //
 // The loops are here (calibrate.cpp); the solver on the surfaces is in surface_solver.hpp,
-// the parameter uncertainty and the determination warnings in uncertainty.hpp.
+// the parameter uncertainty and the determination warnings in uncertainty.hpp, the
+// realisations and their scatter in replicates.hpp, the surfaces' Jacobian in sensitivity.hpp.
 #pragma once
 #include <Eigen/Dense>
 #include <functional>
