@@ -29,7 +29,7 @@ struct MeanDifference {
 MeanDifference difference_of_means(const SampleSummary& colza, const SampleSummary& yade);
 
 // A linear combination sum_k w_k mean_k of per-load means, for each code (with w the weights
-// of a least-squares line's intercept or slope, line_weights in curve_math.hpp: the
+// of a least-squares line's intercept or slope, line_weights in analysis/curve_comparison.hpp: the
 // Mohr-Coulomb C or tan(Phi) of the mean strengths), and the difference of the codes'
 // combinations, its standard error (se^2 = sum_k w_k^2 (se_colza,k^2 + se_yade,k^2), every
 // run independent) and Welch-Satterthwaite degrees of freedom over the 2 K variance terms.

@@ -7,7 +7,7 @@
 #include <string>
 #include <tuple>
 #include "checks.hpp"
-#include "curve_math.hpp"
+#include "analysis/curve_comparison.hpp"
 #include "result_files.hpp"
 
 namespace crosscheck {
@@ -34,15 +34,15 @@ void compare_scene_series(Report& report, const std::string& scene, const Csv& c
       const double c0 = displacement ? cc[0] : 0.0, y0 = displacement ? yc[0] : 0.0;
       // max_magnitude, not std::max: a NaN must not be skipped (an all-NaN YADE series passed)
       for (std::size_t r = 0; r < cc.size(); ++r) {
-        num = max_magnitude(num, cc[r] - yc[r]);
-        cmax = max_magnitude(cmax, cc[r] - c0);
-        ymax = max_magnitude(ymax, yc[r] - y0);
+        num = colza::max_magnitude(num, cc[r] - yc[r]);
+        cmax = colza::max_magnitude(cmax, cc[r] - c0);
+        ymax = colza::max_magnitude(ymax, yc[r] - y0);
       }
     }
     // The floor stands for the signal when colza's is smaller (a zero torque by symmetry); with
     // a zero floor a zero signal agrees only with a zero difference (relative_difference). A NaN
     // cmax (a value not finite) gives +inf whatever the floor.
-    const double metric = relative_difference(num, std::isnan(cmax) ? cmax : std::max(cmax, fl));
+    const double metric = colza::relative_difference(num, std::isnan(cmax) ? cmax : std::max(cmax, fl));
     auto& w = worst[kind];
     if (std::get<3>(w).empty() || metric > std::get<0>(w) || (metric == std::get<0>(w) && cmax > std::get<1>(w)))
       w = {metric, cmax, ymax, who};
@@ -72,9 +72,9 @@ void compare_scene_series(Report& report, const std::string& scene, const Csv& c
   const auto& yc = y.at("contacts");
   double dmax = 0.0, cm = 0.0, ym = 0.0;  // counts >= 0; NaN once a count is not finite
   for (std::size_t r = 0; r < cc.size(); ++r) {
-    dmax = max_magnitude(dmax, cc[r] - yc[r]);
-    cm = max_magnitude(cm, cc[r]);
-    ym = max_magnitude(ym, yc[r]);
+    dmax = colza::max_magnitude(dmax, cc[r] - yc[r]);
+    cm = colza::max_magnitude(cm, cc[r]);
+    ym = colza::max_magnitude(ym, yc[r]);
   }
   report.check(scene + " contacts (max count, max |diff|)", cm, ym, dmax, Measure::kAbsolute, contacts_tol, "%.0f");
 }

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 #include "checks.hpp"
-#include "curve_math.hpp"
+#include "analysis/curve_comparison.hpp"
 #include "ensemble_runs.hpp"
 #include "result_files.hpp"
 
@@ -54,7 +54,7 @@ void compare_oedometer_curves(Report& report, const std::string& label, const Cs
                std::abs(c.at("contacts")[0] - y.at("contacts")[0]), Measure::kAbsolute, fixed_tolerance(0.0), "%.0f");
   // Early rows: before chaos amplifies rounding, the curves must coincide.
   const std::size_t early = static_cast<std::size_t>(t.table.at_path("early_rows").value_or(10));
-  const MaxDifference start = max_difference(cf, yf, std::min({early, c.rows(), y.rows()}));
+  const colza::MaxDifference start = colza::max_difference(cf, yf, std::min({early, c.rows(), y.rows()}));
   report.check(label + " force, first " + std::to_string(early) + " rows (max |diff| / max F)", start.max_colza,
                start.max_yade, start.relative, Measure::kRelative, t.get("early_relative", 1e-5));
   // Logged range: from the fit's lower force on, up to the smaller final travel.
@@ -66,7 +66,7 @@ void compare_oedometer_curves(Report& report, const std::string& label, const Cs
       break;
     }
   const double s_hi = std::min(cs_.back(), ysd.back());
-  const RmsDifference d = rms_difference(cs_, cf, ysd, yf, s_lo, s_hi);
+  const colza::RmsDifference d = colza::rms_difference(cs_, cf, ysd, yf, s_lo, s_hi);
   report.check(label + " force rms difference / rms force (" + std::to_string(d.n) + " rows, travel " +
                    fmt(1e3 * s_lo, "%.2f") + "-" + fmt(1e3 * s_hi, "%.2f") + " mm)",
                d.rms_colza, d.rms_yade, d.relative, Measure::kRelative, t.get("rms_relative", 0.05));
@@ -77,7 +77,7 @@ void compare_oedometer_curves(Report& report, const std::string& label, const Cs
       report.fail(metric, std::string(s > cs_.back() ? "colza's" : "YADE's") + " curve stops before this travel");
       continue;
     }
-    const double fc = interpolate(cs_, cf, s), fy = interpolate(ysd, yf, s);
+    const double fc = colza::interpolate(cs_, cf, s), fy = colza::interpolate(ysd, yf, s);
     report.check(metric, fc, fy, std::abs(fc - fy) / std::abs(fc), Measure::kRelative, t.get("force_at_relative", 0.1),
                  "%.1f");
   }
@@ -141,8 +141,8 @@ void compare_ensemble(const CheckContext& ctx, Report& report, const std::string
       if (read_json(y_out[k] / "summary.json").value("foreign_patch_contacts", -1) != 0)
         throw std::runtime_error("YADE's summary.json is missing, or a cylinder patch touched a sphere other than its own");
       for (std::size_t j = 0; j < travels.size(); ++j) {
-        const double fc = interpolate(c.at("piston_displacement"), c.at("piston_force"), travels[j]);
-        const double fy = interpolate(y.at("piston_displacement"), y.at("piston_force"), travels[j]);
+        const double fc = colza::interpolate(c.at("piston_displacement"), c.at("piston_force"), travels[j]);
+        const double fy = colza::interpolate(y.at("piston_displacement"), y.at("piston_force"), travels[j]);
         if (!std::isfinite(fc) || !std::isfinite(fy))
           throw std::runtime_error("a curve stops before " + fmt(1e3 * travels[j], "%.1f") + " mm of travel");
         c_force[j].push_back(fc);

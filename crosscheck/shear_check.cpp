@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 #include "checks.hpp"
-#include "curve_math.hpp"
+#include "analysis/curve_comparison.hpp"
 #include "ensemble_runs.hpp"
 #include "result_files.hpp"
 #include "shear_setting.hpp"
@@ -25,7 +25,7 @@ namespace crosscheck {
 void compare_shear_start(Report& report, const std::string& label, const Csv& c, const Csv& y, const Tolerance& relative) {
   if (c.rows() != y.rows() || c.rows() == 0) throw std::runtime_error("different numbers of curve rows");
   for (const char* q : {"shear_stress", "normal_stress"}) {
-    const MaxDifference d = max_difference(c.at(q), y.at(q), c.rows());
+    const colza::MaxDifference d = colza::max_difference(c.at(q), y.at(q), c.rows());
     report.check(label + " start, " + q + " (" + std::to_string(c.rows()) + " rows, max |diff| / max)", d.max_colza,
                  d.max_yade, d.relative, Measure::kRelative, relative);
   }
@@ -34,9 +34,9 @@ void compare_shear_start(Report& report, const std::string& label, const Csv& c,
   double dmax = 0.0, c_max_count = 0.0, y_max_count = 0.0;
   for (std::size_t r = 0; r < c.rows(); ++r)
     for (const char* q : {"contacts", "bonds"}) {
-      dmax = max_magnitude(dmax, c.at(q)[r] - y.at(q)[r]);
-      c_max_count = max_magnitude(c_max_count, c.at(q)[r]);
-      y_max_count = max_magnitude(y_max_count, y.at(q)[r]);
+      dmax = colza::max_magnitude(dmax, c.at(q)[r] - y.at(q)[r]);
+      c_max_count = colza::max_magnitude(c_max_count, c.at(q)[r]);
+      y_max_count = colza::max_magnitude(y_max_count, y.at(q)[r]);
     }
   const double nan = std::numeric_limits<double>::quiet_NaN();
   report.check(label + " start, contacts and bonds (max |diff|)", std::isnan(c_max_count) ? nan : c.at("contacts").back(),
@@ -164,7 +164,7 @@ std::optional<std::pair<double, double>> compare_load(const CheckContext& ctx, c
                  std::abs(c_sig - y_sig) / std::abs(c_sig), Measure::kRelative,
                  s.tolerances().get("normal_stress_relative", 0.01), "%.3f");
     // shear stress over the strength window, YADE interpolated at colza's offsets
-    const RmsDifference d = rms_difference(c.at("shear_displacement"), c.at("shear_stress"),
+    const colza::RmsDifference d = colza::rms_difference(c.at("shear_displacement"), c.at("shear_stress"),
                                            y.at("shear_displacement"), y.at("shear_stress"), window_start, window_end);
     check_one_realisation(report, by_ensemble,
                           l + " shear stress rms difference / rms (" + std::to_string(d.n) + " rows, " +
@@ -231,8 +231,8 @@ void check_shear(const CheckContext& ctx, Report& report, const std::string& siz
     }
   // 4. Mohr-Coulomb line through (nominal load, strength), as colza's shear-series.
   if (c_strength.size() == loads.size() && loads.size() >= 2) {
-    const auto [cc, cphi] = mohr_coulomb(loads, c_strength);
-    const auto [yc, yphi] = mohr_coulomb(loads, y_strength);
+    const auto [cc, cphi] = colza::mohr_coulomb(loads, c_strength);
+    const auto [yc, yphi] = colza::mohr_coulomb(loads, y_strength);
     check_one_realisation(report, by_ensemble, s.label + " cohesion C (kPa)", 1e-3 * cc, 1e-3 * yc,
                           1e-3 * std::abs(cc - yc), Measure::kAbsolute, s, "cohesion_absolute_kpa", 5.0, "%.3f");
     check_one_realisation(report, by_ensemble, s.label + " friction angle Phi (deg)", cphi, yphi, std::abs(cphi - yphi),

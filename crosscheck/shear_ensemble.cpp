@@ -15,7 +15,7 @@
 #include <numbers>
 #include <string>
 #include <vector>
-#include "curve_math.hpp"
+#include "analysis/curve_comparison.hpp"
 #include "ensemble_runs.hpp"
 #include "result_files.hpp"
 #include "shear_setting.hpp"
@@ -83,7 +83,7 @@ void compare_shear_ensemble(const CheckContext& ctx, const ShearSetting& s, Repo
           ", s.e. " + fmt(100.0 * relative.difference.se, "%.2f") + " %", alpha_row);
   if (loads.size() < 2) return;
   // The Mohr-Coulomb line through the mean strengths.
-  const LineWeights w = line_weights(loads);
+  const colza::LineWeights w = colza::line_weights(loads);
   const LinearComparison cohesion = compare_linear(w.intercept, colza, yade);
   check_p(report, what + " cohesion C (kPa, mean +- s.e.)",
           mean_and_error(1e-3 * cohesion.colza, 1e-3 * cohesion.colza_se),

@@ -97,23 +97,6 @@ void finish_validation(const Problem& p, CalibrationResult& r, const Eigen::Vect
   r.within_uncertainty = normalised_misfit(p, achieved, tolerance) <= 1.0;
 }
 
-// `points` (realisation 0) and realisations 1..R of `x_replicated` (R = Problem::replicates),
-// all in one batch of up to `jobs` at once.
-struct BatchWithReplicates {
-  std::vector<Eigen::VectorXd> points, replicates;
-};
-BatchWithReplicates evaluate_with_replicates(const Problem& p, const ForwardModel& model, const LoopOptions& opt,
-                                             const std::vector<Eigen::VectorXd>& points,
-                                             const Eigen::VectorXd& x_replicated) {
-  const std::size_t n = points.size(), extra = static_cast<std::size_t>(p.replicates);
-  BatchWithReplicates b{std::vector<Eigen::VectorXd>(n), std::vector<Eigen::VectorXd>(extra)};
-  run_concurrently(n + extra, opt.jobs, [&](std::size_t k) {
-    if (k < n) b.points[k] = model(points[k]);
-    else b.replicates[k - n] = opt.replicate_model(x_replicated, static_cast<int>(k - n) + 1);
-  });
-  return b;
-}
-
 // Appends the replicates of x (realisation 0 gave y0) to r.runs, sets r.scatter and
 // r.scatter_at and returns the mean of all R + 1 realisations.
 Eigen::VectorXd record_scatter(const LoopOptions& opt, const Eigen::VectorXd& x, const Eigen::VectorXd& y0,
@@ -205,17 +188,6 @@ Eigen::VectorXd single_run_tolerance(const Problem& p, const Eigen::VectorXd& sc
   return tolerances(p, scatter, 1);
 }
 
-Eigen::VectorXd realisation_scatter(const std::vector<Eigen::VectorXd>& ys) {
-  if (ys.empty()) return {};
-  const Eigen::Index m = ys[0].size();
-  Eigen::VectorXd mean = Eigen::VectorXd::Zero(m), var = Eigen::VectorXd::Zero(m);
-  for (const auto& y : ys) mean += y;
-  mean /= static_cast<double>(ys.size());
-  if (ys.size() < 2) return var;
-  for (const auto& y : ys) var += (y - mean).array().square().matrix();
-  return (var / static_cast<double>(ys.size() - 1)).cwiseSqrt();
-}
-
 void validate_problem(const Problem& p, bool sequential) {
   if (p.parameters.empty()) throw CalibrationError("parameters", "no parameters to calibrate");
   if (p.targets.empty()) throw CalibrationError("targets", "no targets to calibrate against");
@@ -296,7 +268,8 @@ CalibrationResult calibrate_paper(const Problem& p, const ForwardModel& model, c
                          "there)");
   r.solution = round_point(compromise);
   // The validation run, and with replicates its other realisations (all in one batch).
-  const BatchWithReplicates v = evaluate_with_replicates(p, model, opt, {r.solution}, r.solution);
+  const BatchWithReplicates v =
+      evaluate_with_replicates(model, opt.replicate_model, {r.solution}, r.solution, p.replicates, opt.jobs);
   r.runs.push_back({r.solution, v.points[0], "validation", 1});
   if (opt.on_run) opt.on_run(r.runs.back());
   Eigen::VectorXd achieved = v.points[0];
@@ -398,7 +371,8 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
     for (auto& x : start) x = round_point(x);
   }
   // The start design, and with replicates the other realisations of its first point (one batch).
-  const BatchWithReplicates b = evaluate_with_replicates(p, model, opt, start, start[0]);
+  const BatchWithReplicates b =
+      evaluate_with_replicates(model, opt.replicate_model, start, start[0], p.replicates, opt.jobs);
   const std::vector<Eigen::VectorXd>& ys = b.points;
   std::vector<std::size_t> pool;  // runs that take part in the search (not the replicates)
   for (std::size_t k = 0; k < start.size(); ++k) {

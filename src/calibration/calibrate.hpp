@@ -36,7 +36,8 @@
 // G diag(o) G^T, o the scatter the surfaces do not show (see above).
 //
 // The loops are here (calibrate.cpp); the solver on the surfaces is in surface_solver.hpp,
-// the parameter uncertainty and the determination warnings in uncertainty.hpp.
+// the parameter uncertainty and the determination warnings in uncertainty.hpp, the
+// realisations and their scatter in replicates.hpp, the surfaces' Jacobian in sensitivity.hpp.
 #pragma once
 #include <Eigen/Dense>
 #include <functional>
@@ -44,6 +45,7 @@
 #include <string>
 #include <vector>
 
+#include "calibration/replicates.hpp"
 #include "calibration/response_surface.hpp"
 
 namespace colza::calibration {
@@ -87,11 +89,8 @@ struct Problem {
 // for all four). The 2 x 2 matrix [[1, rho], [rho, 1]].
 Eigen::MatrixXd line_fit_correlation(const std::vector<double>& x);
 
-// The forward model: parameters (SI) -> targets (SI). Must be callable from several threads
-// at once (the DEM model is; the identity model is pure).
-using ForwardModel = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
-// The same model in realisation k >= 1 (the DEM: seed + k); realisation 0 is ForwardModel.
-using ReplicateModel = std::function<Eigen::VectorXd(const Eigen::VectorXd&, int)>;
+// The forward model (ForwardModel, ReplicateModel) and the realisation scatter
+// (realisation_scatter, evaluate_with_replicates): replicates.hpp.
 
 // A target the surfaces cannot reach inside the bounds, or a design that cannot be fitted.
 // `key` names what to change (the target or the design).
@@ -165,7 +164,5 @@ double normalised_misfit(const Problem& problem, const Eigen::VectorXd& y);
 double normalised_misfit(const Problem& problem, const Eigen::VectorXd& y, const Eigen::VectorXd& tolerance);
 // What one run's error is judged against: sqrt(u_i^2 + s_i^2), or u_i when `scatter` is empty.
 Eigen::VectorXd single_run_tolerance(const Problem& problem, const Eigen::VectorXd& scatter);
-// Per-target sample standard deviation (n - 1) of realisations (rows: realisations).
-Eigen::VectorXd realisation_scatter(const std::vector<Eigen::VectorXd>& realisations);
 
 }  // namespace colza::calibration

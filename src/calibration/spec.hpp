@@ -2,12 +2,15 @@
 // configuration the runs start from, the parameters and their design, the measured data
 // (files in plain formats) and the targets' uncertainties. Every problem is reported as a
 // ConfigError naming the file, the key and the reason (CLI exit code 2).
+// read_spec reads the top level and hands each table to its reader: [model] to
+// spec_model.hpp, [[parameters]], [fit], [sequential] and [scatter] to spec_design.hpp,
+// [measured] to the stage's reader in the lab-test table (lab_tests.hpp, spec_measured.hpp);
+// the fields are read through a ConfigNode in the spec's words (spec_fields.hpp).
 #pragma once
 #include <string>
 #include <vector>
 
 #include "calibration/calibrate.hpp"
-#include "calibration/measured_csv.hpp"
 #include "calibration/measured_shear_curve.hpp"
 #include "config/run_config.hpp"
 

@@ -6,16 +6,11 @@
 #include <string>
 
 #include "calibration/calibration_common.hpp"
+#include "calibration/sensitivity.hpp"
 
 namespace colza::calibration {
 
 namespace {
-
-Eigen::MatrixXd surfaces_jacobian(const std::vector<ResponseSurface>& s, const Eigen::VectorXd& x) {
-  Eigen::MatrixXd J(s.size(), x.size());
-  for (std::size_t i = 0; i < s.size(); ++i) J.row(i) = s[i].gradient(x).transpose();
-  return J;
-}
 
 // Which parameter (or combination) the targets do not determine: the direction of least
 // response, the right singular vector of the smallest singular value of the Jacobian scaled

@@ -57,6 +57,10 @@ ConfigReader ConfigReader::from_string(const std::string& text, const std::strin
 
 ConfigReader ConfigReader::empty(const std::string& source_name) { return ConfigReader(toml::table{}, source_name); }
 
+ConfigReader ConfigReader::from_table(toml::table document, const std::string& source_name) {
+  return ConfigReader(std::move(document), source_name);
+}
+
 void ConfigReader::apply_override(const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
@@ -240,6 +244,24 @@ T ConfigNode::use_default(const std::string& key, const T& fallback) const {
 }
 
 bool ConfigNode::has(const std::string& key) const { return table_ && table_->contains(key); }
+
+std::vector<std::string> ConfigNode::keys() const {
+  std::vector<std::string> out;
+  if (table_)
+    for (const auto& [k, node] : *table_) out.emplace_back(k.str());
+  return out;
+}
+
+void ConfigNode::reject_unread_keys(const std::string& reason) const {
+  const auto read_under = [&](const std::string& prefix) {
+    const auto it = reader_->used_.lower_bound(prefix);
+    return it != reader_->used_.end() && it->compare(0, prefix.size(), prefix) == 0;
+  };
+  for (const std::string& key : keys()) {
+    const std::string k = full(key);
+    if (!reader_->used_.count(k) && !read_under(k + ".") && !read_under(k + "[")) fail(key, reason);
+  }
+}
 
 bool ConfigNode::is_string(const std::string& key) const {
   return table_ && table_->get(key) && table_->get(key)->is_string();

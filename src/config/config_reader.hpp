@@ -39,6 +39,12 @@ class ConfigNode {
   std::vector<double> number_list(const std::string& key, const std::vector<double>& fallback) const;
   bool has(const std::string& key) const;
   bool is_string(const std::string& key) const;
+  // The value of `key` as it stands in the document, recorded as read; null when absent.
+  const toml::node* get(const std::string& key) const { return find(key); }
+  // Whether this table is in the document (a view on an absent table has no keys).
+  bool exists() const { return table_ != nullptr; }
+  // The table's keys, in the document's order.
+  std::vector<std::string> keys() const;
   ConfigNode table(const std::string& key) const;              // empty view if absent
   std::vector<ConfigNode> table_array(const std::string& key) const;
   // Raises a ConfigError about `key` of this table.
@@ -46,7 +52,15 @@ class ConfigNode {
   // Raises "is required (<what>)" about `key` unless the table has it, naming a key of the
   // table that looks like a misspelling of it.
   void require(const std::string& key, const std::string& what) const;
+  // " (the table has 'radus': misspelt?)" for a key of this table close to `key`, else "".
+  std::string misspelt_hint(const std::string& key) const { return misspelt_key_hint(table_, key); }
+  // Raises a ConfigError (`reason`) about the first key of this table that was not read; a
+  // sub-table or array of tables counts as read when one of its keys was. For a document
+  // checked table by table; ConfigReader::reject_unknown_keys checks a whole document.
+  void reject_unread_keys(const std::string& reason) const;
   const std::string& path() const { return path_; }
+  // `key`'s dotted path in the document ("measured.curves[0].file").
+  std::string full(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
 
  private:
   friend class ConfigReader;
@@ -56,7 +70,6 @@ class ConfigNode {
   // Records that `key` was absent and `fallback` used: resolved_text() writes it.
   template <class T>
   T use_default(const std::string& key, const T& fallback) const;
-  std::string full(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
   const ConfigReader* reader_;
   const toml::table* table_;  // may be null (absent table)
   std::string path_;
@@ -68,6 +81,8 @@ class ConfigReader {
   static ConfigReader from_file(const std::string& path);
   static ConfigReader from_string(const std::string& text, const std::string& source_name);
   static ConfigReader empty(const std::string& source_name = "(built-in defaults)");
+  // A document parsed by the caller (who reports its syntax errors in its own words).
+  static ConfigReader from_table(toml::table document, const std::string& source_name);
 
   // key=value, value in TOML syntax (bare words are taken as strings).
   void apply_override(const std::string& assignment);

@@ -1,4 +1,4 @@
-// The cross-check's curve arithmetic (crosscheck/curve_math.hpp), on cases worked by hand.
+// The cross-check's curve arithmetic (src/analysis/curve_comparison.hpp), on cases worked by hand.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,17 +6,17 @@
 #include <numbers>
 #include <vector>
 
-#include "crosscheck/curve_math.hpp"
+#include "analysis/curve_comparison.hpp"
 
 namespace {
 
-using crosscheck::interpolate;
-using crosscheck::line_weights;
-using crosscheck::max_difference;
-using crosscheck::max_magnitude;
-using crosscheck::mohr_coulomb;
-using crosscheck::relative_difference;
-using crosscheck::rms_difference;
+using colza::interpolate;
+using colza::line_weights;
+using colza::max_difference;
+using colza::max_magnitude;
+using colza::mohr_coulomb;
+using colza::relative_difference;
+using colza::rms_difference;
 
 const double kInfinity = std::numeric_limits<double>::infinity();
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "crosscheck/curve_math.hpp"  // line_weights
+#include "analysis/curve_comparison.hpp"  // line_weights
 #include "crosscheck/ensemble_runs.hpp"
 #include "crosscheck/ensemble_stats.hpp"
 
@@ -16,7 +16,7 @@ namespace {
 using crosscheck::compare_linear;
 using crosscheck::compare_mean_relative;
 using crosscheck::difference_of_means;
-using crosscheck::line_weights;
+using colza::line_weights;
 using crosscheck::perturbed_packing;
 using crosscheck::SampleSummary;
 using crosscheck::summarise;

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-namespace crosscheck {
+namespace colza {
 
 // ys at x by linear interpolation in increasing xs; NaN outside [xs.front(), xs.back()] and
 // for a NaN x.
@@ -56,4 +56,4 @@ LineWeights line_weights(const std::vector<double>& x);
 // Phi in degrees).
 std::pair<double, double> mohr_coulomb(const std::vector<double>& sigma, const std::vector<double>& tau);
 
-}  // namespace crosscheck
+}  // namespace colza

@@ -1,11 +1,11 @@
-#include "curve_math.hpp"
+#include "analysis/curve_comparison.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
-namespace crosscheck {
+namespace colza {
 
 double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
   // Written as "not inside" so that a NaN x is outside too (x < front and x > back are both
@@ -88,4 +88,4 @@ std::pair<double, double> mohr_coulomb(const std::vector<double>& sigma, const s
   return {cohesion, std::atan(slope) * 180.0 / std::numbers::pi};
 }
 
-}  // namespace crosscheck
+}  // namespace colza

@@ -1,0 +1,71 @@
+#include "calibration/lab_tests.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "calibration/measured_load_unload.hpp"
+#include "calibration/measured_shear_features.hpp"
+#include "calibration/spec_measured.hpp"
+#include "core/types.hpp"
+
+namespace colza::calibration {
+
+namespace {
+
+// A measured load-unload curve in the model's cylinder: A = pi D^2 / 4, D =
+// oedometer.cylinder_diameter; moduli at oedometer.modulus_stresses (default: half the
+// curve's largest stress).
+Features measured_load_unload_curve_features(const std::string& csv, const MeasuredCurveContext& c) {
+  const MeasuredLoadUnload m = read_measured_load_unload(csv, c.spec_file, c.key);
+  const double diameter = c.model->oedometer.cylinder_diameter;
+  const double area = kPi * 0.25 * diameter * diameter;
+  CycleAnalysisSettings s;
+  s.modulus_stresses = c.model->oedometer.cycles.modulus_stresses;
+  s.modulus_window = c.model->oedometer.cycles.modulus_window;
+  if (s.modulus_stresses.empty()) s.modulus_stresses = {0.5 * *std::max_element(m.force.begin(), m.force.end()) / area};
+  return load_unload_features(
+      measured_load_unload_features(m, {area, c.sample_height, diameter}, s, c.spec_file, c.key));
+}
+
+// A measured shear curve with the model's strength window (shear_box.strength_window_*),
+// the peak over a trailing 1 mm and the secant stiffness to half the peak; its features
+// under the per-load names without the load (the file does not state its normal stress).
+Features measured_shear_curve_features(const std::string& csv, const MeasuredCurveContext& c) {
+  ShearCurveSettings s;
+  s.window = {c.model->shear_box.strength_window_start, c.model->shear_box.strength_window_end};
+  Features f;
+  add_shear_curve_features(read_measured_shear_features(csv, s, c.spec_file, c.key, c.model->shear_box.length).features,
+                           "", f);
+  return f;
+}
+
+}  // namespace
+
+const std::vector<LabTest>& lab_tests() {
+  static const std::vector<LabTest> kTests = {
+      {"density", Scenario::kOedometer, {"bulk_density"}, &read_measured_density, nullptr},
+      {"compression", Scenario::kOedometer, {"c0", "c1", "c2", "fit_r2", "bulk_density"}, &read_measured_compression,
+       nullptr},
+      {"shear", Scenario::kShear, {"cohesion", "tan_phi", "friction_angle_deg", "<load>/shear_strength"},
+       &read_measured_shear, nullptr},
+      {"load_unload", Scenario::kOedometer,
+       {"cycle<k>/loop_area", "cycle<k>/permanent_strain", "cycle<k>/rebound_strain", "branch<b>/modulus@<sigma*>Pa",
+        "branch<b>/lateral_ratio@<sigma*>Pa"},
+       nullptr, &measured_load_unload_curve_features},
+      {"shear_curve", Scenario::kShear,
+       {"<load>/peak_strength", "<load>/residual_strength", "<load>/drop", "<load>/max_dilation",
+        "<load>/dilatancy_angle_deg", "<load>/initial_stiffness"},
+       nullptr, &measured_shear_curve_features},
+  };
+  return kTests;
+}
+
+const LabTest& lab_test(const std::string& name) {
+  for (const LabTest& t : lab_tests())
+    if (t.name == name) return t;
+  throw std::out_of_range("no lab test named \"" + name + "\"");
+}
+
+const LabTest& lab_test(Stage stage) { return lab_test(std::string(to_string(stage))); }
+
+}  // namespace colza::calibration

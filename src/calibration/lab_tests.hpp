@@ -1,0 +1,43 @@
+// The lab tests colza reproduces, one row each: the scenario that runs it, the features a
+// run of it yields (run_features.hpp names; "<load>/" and "cycle<k>/", "branch<b>/" stand
+// for the per-load, per-cycle and per-branch families) and the reader of its measured data:
+// a calibration stage's [measured] table (spec_measured.hpp), or a measured curve file
+// whose features come under the run features' names.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "calibration/run_features.hpp"
+#include "calibration/spec.hpp"
+#include "config/config_reader.hpp"
+#include "config/run_config.hpp"
+
+namespace colza::calibration {
+
+// What reading a measured curve needs beside the file: the model it is compared with (the
+// cylinder, the shear box and its windows) and where the file was named, for errors.
+struct MeasuredCurveContext {
+  const RunConfig* model = nullptr;
+  double sample_height = 0.0;  // m, load-unload: the sample's height at zero travel
+  std::string spec_file, key;
+};
+
+// A stage's [measured] table -> s.problem.targets and what they came from.
+using SpecMeasuredReader = void (*)(const ConfigNode& measured, Spec& s);
+// A measured curve file -> its features.
+using CurveFeatureReader = Features (*)(const std::string& csv, const MeasuredCurveContext& context);
+
+struct LabTest {
+  std::string name;                 // "density", "compression", "shear", "load_unload", "shear_curve"
+  Scenario scenario;                // the scenario a run of it is
+  std::vector<std::string> features;
+  SpecMeasuredReader read_spec_measured = nullptr;  // calibration stages
+  CurveFeatureReader read_curve_features = nullptr; // measured curves
+};
+
+const std::vector<LabTest>& lab_tests();
+// The row of `name`, or of a calibration stage; std::out_of_range when there is none.
+const LabTest& lab_test(const std::string& name);
+const LabTest& lab_test(Stage stage);
+
+}  // namespace colza::calibration

@@ -1,0 +1,24 @@
+// The spec's [measured] table, one reader per stage: the measured data (values, or files in
+// plain formats, data/measured/README.md) and their uncertainties -> s.problem.targets (and
+// their correlation) and what they were derived from, for the report. Each reader expects
+// [measured] present, s.stage, s.base and s.file set; checks units (colza reads SI) and
+// every file before any run.
+#pragma once
+#include "calibration/spec.hpp"
+#include "config/config_reader.hpp"
+
+namespace colza::calibration {
+
+// Density: bulk_density (kg/m^3) +/- bulk_density_uncertainty.
+void read_measured_density(const ConfigNode& measured, Spec& s);
+
+// Compression: c1 (N/m), c2 (N/m^2) given, or fitted to a measured curve over the model's
+// fit range; c1_uncertainty, c2_uncertainty; optional correlation.
+void read_measured_compression(const ConfigNode& measured, Spec& s);
+
+// Shear: cohesion C (Pa) and tan(Phi) of the Mohr-Coulomb line through measured strengths
+// (a results CSV, or one curve per normal load read by measured.strength), their
+// uncertainties and correlation, and the loads of each design run's series (s.loads).
+void read_measured_shear(const ConfigNode& measured, Spec& s);
+
+}  // namespace colza::calibration
