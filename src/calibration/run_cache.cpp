@@ -1,5 +1,7 @@
 #include "calibration/run_cache.hpp"
 
+#include "calibration/run_features.hpp"
+
 #include <chrono>
 #include <cstdio>
 #include <sstream>
@@ -71,6 +73,9 @@ nlohmann::json run_oedometer_outputs(const RunConfig& c, const fs::path& dir, do
     out["c2"] = r.fit.fit.coefficients[2];
     out["fit_r2"] = r.fit.fit.r2;
   }
+  // A load-unload run's branch and cycle features (run_features.hpp names).
+  if (!c.oedometer.cycles.targets.empty())
+    for (const auto& [name, value] : load_unload_features(r.cycles)) out[name] = value;
   fs::create_directories(dir);
   write_csv((dir / "curve.csv").string(), r.curve);
   return out;

@@ -13,6 +13,7 @@
 #endif
 
 #include "cli/calibrate_command.hpp"
+#include "cli/diagnose_command.hpp"
 #include "cli/features_command.hpp"
 #include "cli/run_commands.hpp"
 #include "core/interrupt.hpp"
@@ -133,6 +134,20 @@ int main(int argc, char** argv) {
   calibrate->add_flag("--force", cal.force, "replace an earlier calibration result in --out (finished runs are still reused)");
   calibrate->add_flag("--quiet", cal.quiet, "no per-run lines");
 
+  colza::DiagnoseOptions diag;
+  CLI::App* diagnose = app.add_subcommand(
+      "diagnose", "what the calibrated model gets wrong against measured features, which mechanism explains it, the gain");
+  diagnose->add_option("--spec", diag.spec_path, "diagnosis spec (TOML, see data/diagnosis/README.md)")->required();
+  diagnose->add_option("--out", diag.out_dir, "output directory (DEM runs are kept and reused in DIR/runs unless --runs)")
+      ->required();
+  diagnose->add_option("--runs", diag.runs_dir, "where DEM runs are kept and reused (default: OUT/runs)");
+  diagnose->add_option("--jobs", diag.jobs, "DEM runs side by side")->check(at_least_one());
+  diagnose->add_option("--threads", diag.threads,
+                       "worker threads per DEM run (default: OMP_NUM_THREADS, else the cores divided by --jobs)")
+      ->check(at_least_one());
+  diagnose->add_flag("--force", diag.force, "replace an earlier diagnosis result in --out (finished runs are still reused)");
+  diagnose->add_flag("--quiet", diag.quiet, "no per-run lines");
+
   colza::FeaturesOptions feat;
   CLI::App* features = app.add_subcommand(
       "features", "the lab-test features of a curve file (a measured one, or a colza curve.csv), printed as JSON");
@@ -179,13 +194,15 @@ int main(int argc, char** argv) {
     return inapplicable("--jobs", "only `colza run shear-series` does (use --threads for one run)");
   if (opt.threads == 0) opt.threads = default_worker_threads(opt.jobs);
   if (cal.threads == 0) cal.threads = default_worker_threads(cal.jobs);
+  if (diag.threads == 0) diag.threads = default_worker_threads(diag.jobs);
 #ifdef _OPENMP
-  omp_set_num_threads(run->parsed() ? opt.threads : cal.threads);
+  omp_set_num_threads(run->parsed() ? opt.threads : diagnose->parsed() ? diag.threads : cal.threads);
 #endif
   colza::install_interrupt_handlers();
   try {
     if (run->parsed()) return colza::run_command(opt);
     if (calibrate->parsed()) return colza::calibrate_command(cal);
+    if (diagnose->parsed()) return colza::diagnose_command(diag);
     if (features->parsed()) return colza::features_command(feat);
   } catch (const colza::Interrupted& e) {
     std::fprintf(stderr, "colza: %s: stopped; the unfinished outputs were removed, earlier results are untouched\n",

@@ -48,6 +48,7 @@ std::string earlier_result_command(const fs::path& dir) {
   if (j.contains("scenario") && j["scenario"].is_string()) return "run " + j["scenario"].get<std::string>();
   if (j.contains("stage") && j["stage"].is_string() && j.contains("mode"))
     return "calibrate " + j["stage"].get<std::string>();
+  if (j.contains("verdict") && j.contains("spec")) return "diagnose --spec";
   return "";
 }
 
