@@ -2,10 +2,10 @@
 // overrides ("key=value") and realisation; it is kept in <runs>/<fingerprint>/ with its
 // summary.json (written last: a folder with one is a finished run) and its curves
 // (oedometer: curve.csv; shear series: load-<sigma>Pa.csv per load; angle of repose:
-// heap_profile.csv). The fingerprint is
-// FNV-1a 64 (io/fingerprint.hpp) of the run's full configuration as used, the contents of
-// the packing file it names and, when it loads a shared packing, that packing's
-// fingerprint: a request whose fingerprint has a finished run is answered from it.
+// heap_profile.csv). The fingerprint is FNV-1a 64 (io/fingerprint.hpp) of the run's full
+// configuration as used, the contents of the packing file it names and, when it loads a
+// shared packing, that packing's fingerprint: a request whose fingerprint has a finished run
+// is answered from it.
 //
 // Realisation k >= 1 is the same run with seed = the configuration's seed + k.
 // Shared packings (oedometer): one packing settled per packing configuration and seed, kept
