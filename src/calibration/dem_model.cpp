@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "calibration/run_features.hpp"
 #include "io/format_number.hpp"
 
 namespace colza::calibration {
@@ -42,7 +43,10 @@ RunRequest DemModel::request_for(const Eigen::VectorXd& x, int replicate) const 
   std::vector<std::string> o = spec_.model_set;
   if (spec_.stage == Stage::kShear) {
     std::string loads = "shear_box.normal_stresses=[";
-    for (std::size_t k = 0; k < spec_.loads.size(); ++k) loads += (k ? "," : "") + num17(spec_.loads[k]);
+    for (std::size_t k = 0; k < spec_.loads.size(); ++k) {
+      if (k > 0) loads += ',';
+      loads += num17(spec_.loads[k]);
+    }
     o.push_back(loads + "]");
   }
   r.overrides = overrides_at(spec_, x, std::move(o));

@@ -17,7 +17,6 @@
 #include <vector>
 
 #include "calibration/run_cache.hpp"
-#include "calibration/run_features.hpp"
 #include "calibration/spec.hpp"
 
 namespace colza::calibration {

@@ -56,6 +56,9 @@ const std::vector<LabTest>& lab_tests() {
        {"<load>/peak_strength", "<load>/residual_strength", "<load>/drop", "<load>/max_dilation",
         "<load>/dilatancy_angle_deg", "<load>/initial_stiffness"},
        nullptr, &measured_shear_curve_features},
+      {"repose", Scenario::kRepose,
+       {"angle_of_repose_deg", "angle_of_repose_error_deg", "heap_height", "heap_radius", "column_bulk_density"},
+       nullptr, nullptr},
   };
   return kTests;
 }

@@ -28,11 +28,12 @@ using SpecMeasuredReader = void (*)(const ConfigNode& measured, Spec& s);
 using CurveFeatureReader = Features (*)(const std::string& csv, const MeasuredCurveContext& context);
 
 struct LabTest {
-  std::string name;                 // "density", "compression", "shear", "load_unload", "shear_curve"
+  std::string name;  // "density", "compression", "shear", "load_unload", "shear_curve", "repose"
   Scenario scenario;                // the scenario a run of it is
   std::vector<std::string> features;
-  SpecMeasuredReader read_spec_measured = nullptr;  // calibration stages
-  CurveFeatureReader read_curve_features = nullptr; // measured curves
+  SpecMeasuredReader read_spec_measured = nullptr;   // calibration stages
+  CurveFeatureReader read_curve_features = nullptr;  // measured curves
+  // (repose: neither yet; a measured angle is one number)
 };
 
 const std::vector<LabTest>& lab_tests();

@@ -3,6 +3,7 @@
 #include "calibration/run_features.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <toml++/toml.h>
@@ -20,6 +21,7 @@
 #include "io/summary.hpp"
 #include "io/table.hpp"
 #include "scenario/oedometer.hpp"
+#include "scenario/repose.hpp"
 
 namespace colza::calibration {
 
@@ -50,8 +52,10 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 // The packing file a configuration names for its scenario ("" when the seed makes the sample).
-const std::string& named_packing_file(const RunConfig& c, Scenario scenario) {
-  return scenario == Scenario::kShear ? c.shear_box.packing_file : c.oedometer.packing_file;
+std::string named_packing_file(const RunConfig& c, Scenario scenario) {
+  if (scenario == Scenario::kShear) return c.shear_box.packing_file;
+  if (scenario == Scenario::kOedometer) return c.oedometer.packing_file;
+  return "";
 }
 
 // One oedometer run: its outputs, and its curve written to dir/curve.csv.
@@ -133,6 +137,37 @@ std::vector<std::string> with_seed(Scenario scenario, const std::string& config_
   std::vector<std::string> o = overrides;
   o.push_back("seed=" + std::to_string(seed + static_cast<std::uint64_t>(replicate)));
   return o;
+}
+
+// One angle of repose run: its outputs, and the heap's profile (every sphere's distance from
+// the axis, rho, and its top, m) written to dir/heap_profile.csv.
+nlohmann::json run_repose_outputs(const RunConfig& c, const fs::path& dir, double& wall) {
+  Progress quiet(false);
+  const auto t0 = std::chrono::steady_clock::now();
+  const ReposeResult r = run_repose(c, quiet);
+  wall = seconds_since(t0);
+  const HeapAngle& h = r.heap;
+  nlohmann::json out = {{"particles", r.particles},
+                        {"column_height", r.column_height},
+                        {"column_bulk_density", r.column_bulk_density},
+                        {"settling_converged", r.settling.converged},
+                        {"rest_converged", r.rest.converged},
+                        {"heap_fit_valid", h.valid},
+                        {"heap_height", h.height},
+                        {"heap_radius", h.radius},
+                        {"spheres_beyond_heap", r.spheres_beyond_heap}};
+  if (h.valid) {
+    out["angle_of_repose_deg"] = h.angle_deg;
+    out["angle_of_repose_error_deg"] = h.angle_error_deg;
+    out["heap_fit_r2"] = h.r2;
+  }
+  Table profile({"rho", "top"}, {"m", "m"});
+  for (std::size_t i = 0; i < r.final_state.size(); ++i)
+    profile.add_row({std::hypot(r.final_state.position[i].x(), r.final_state.position[i].y()),
+                     r.final_state.position[i].z() + r.final_state.radius[i]});
+  fs::create_directories(dir);
+  write_csv((dir / "heap_profile.csv").string(), profile);
+  return out;
 }
 
 bool has_load_curves(const fs::path& dir, const std::vector<double>& loads) {
@@ -293,14 +328,16 @@ RunRecord RunCache::run(const RunRequest& request) {
     out.commit();
   } else {
     // The curve is written into the staging folder's final place after the summary check.
+    const bool is_repose = request.scenario == Scenario::kRepose;
+    const char* curve = is_repose ? "heap_profile.csv" : "curve.csv";
     const ScratchFolder tmp(runs_ / process_unique(".tmp-" + rec.id));
     try {
-      outputs = run_oedometer_outputs(c, tmp.path, wall);
+      outputs = is_repose ? run_repose_outputs(c, tmp.path, wall) : run_oedometer_outputs(c, tmp.path, wall);
     } catch (const UnstableMotion& e) {
       throw named(e);
     }
     OutputStaging out(rec.dir, true);
-    fs::rename(tmp.path / "curve.csv", out.path("curve.csv"));
+    fs::rename(tmp.path / curve, out.path(curve));
     write_json(out.path("summary.json"), summary_of());
     out.commit();
   }

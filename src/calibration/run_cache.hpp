@@ -1,10 +1,11 @@
 // DEM runs kept by what they were run from. A run is asked for by scenario, model config,
 // overrides ("key=value") and realisation; it is kept in <runs>/<fingerprint>/ with its
 // summary.json (written last: a folder with one is a finished run) and its curves
-// (oedometer: curve.csv; shear series: load-<sigma>Pa.csv per load). The fingerprint is
-// FNV-1a 64 (io/fingerprint.hpp) of the run's full configuration as used, the contents of
-// the packing file it names and, when it loads a shared packing, that packing's
-// fingerprint: a request whose fingerprint has a finished run is answered from it.
+// (oedometer: curve.csv; shear series: load-<sigma>Pa.csv per load; angle of repose:
+// heap_profile.csv). The fingerprint is FNV-1a 64 (io/fingerprint.hpp) of the run's full
+// configuration as used, the contents of the packing file it names and, when it loads a
+// shared packing, that packing's fingerprint: a request whose fingerprint has a finished run
+// is answered from it.
 //
 // Realisation k >= 1 is the same run with seed = the configuration's seed + k.
 // Shared packings (oedometer): one packing settled per packing configuration and seed, kept
@@ -31,7 +32,8 @@
 namespace colza::calibration {
 
 struct RunRequest {
-  Scenario scenario = Scenario::kOedometer;  // kOedometer, or kShear: a series over shear_box.normal_stresses
+  // kOedometer, kShear (a series over shear_box.normal_stresses) or kRepose.
+  Scenario scenario = Scenario::kOedometer;
   std::string config_path;                   // the model config
   std::vector<std::string> overrides;        // "key=value", applied in order
   int replicate = 0;                         // realisation: seed = the configuration's seed + replicate

@@ -107,7 +107,7 @@ Features load_unload_features(const LoadUnloadAnalysis& a) {
     const CurveBranch& branch = a.branches[b];
     const std::string prefix = "branch" + std::to_string(b + 1) + "/";
     for (const LocalModulus& m : branch.moduli) {
-      const std::string at = "@" + format_shortest(m.stress) + "Pa";
+      const std::string at = std::string("@").append(format_shortest(m.stress)).append("Pa");
       add_if_available(f, prefix + "modulus" + at, m.modulus);
       add_if_available(f, prefix + "lateral_ratio" + at, m.lateral_ratio);
     }

@@ -21,4 +21,7 @@ void read_measured_compression(const ConfigNode& measured, Spec& s);
 // uncertainties and correlation, and the loads of each design run's series (s.loads).
 void read_measured_shear(const ConfigNode& measured, Spec& s);
 
+// [[1, rho], [rho, 1]]: the correlation matrix of two targets from one fit.
+Eigen::MatrixXd correlation_of_two(double rho);
+
 }  // namespace colza::calibration

@@ -13,7 +13,7 @@ namespace colza {
 
 // Least normal stress of a lab direct shear test (Pa): a shear box load below it is taken
 // for kPa (a warning for a run's load here; an error for a calibration's measured loads,
-// calibration/spec.cpp). The paper's loads are 25.75..78.75 kPa.
+// calibration/spec_measured_shear.cpp). The paper's loads are 25.75..78.75 kPa.
 inline constexpr double kLeastLabNormalStress = 100.0;
 
 struct ImplausibleSetting {
