@@ -77,16 +77,31 @@ calibration::Problem calibration_problem(const DiagnosisProblem& p, const std::v
   return c;
 }
 
-Fit judge_fit(const DiagnosisProblem& p, CountingModel& model, const std::string& name, const ModelPoint& point,
-              int fitted) {
+// The realisations at a fit and the noise they give; the adequacy is judged once the
+// sensitivities are known (judge_refit).
+Fit realise_fit(const DiagnosisProblem& p, CountingModel& model, const std::string& name, const ModelPoint& point) {
   Fit f;
   f.model = name;
   const std::vector<Eigen::VectorXd> ys = realisations(model, point, p.settings.replicates);
   f.mean_features = mean_of(ys);
   f.realisation_features = ys;
   f.noise = make_noise_model(measured_sd(p), p.measured_correlation, ys);
-  f.adequacy = test_adequacy(f.noise, measured_values(p) - f.mean_features, fitted, p.settings.significance);
   return f;
+}
+
+// The residual after the linearised refit (a Gauss-Newton step from the fit, in whitened
+// units, shift clamped to the parameters' bounds): m - ybar - A d, d = argmin |L^-1 (m - ybar
+// - A d)|; the calibration's search stops at a run within the noise, not at the least-squares
+// optimum, and what is left in the span of A is not a discrepancy of the model. Judged as a
+// chi-square on F - (columns of A) degrees of freedom.
+void judge_refit(const DiagnosisProblem& p, Fit& f, const Eigen::MatrixXd& A, const Eigen::VectorXd& lower,
+                 const Eigen::VectorXd& upper, const NoiseModel& noise) {
+  const Eigen::VectorXd r = measured_values(p) - f.mean_features;
+  Eigen::VectorXd d = noise.whiten(A).completeOrthogonalDecomposition().solve(noise.whiten(r));
+  for (Eigen::Index j = 0; j < d.size(); ++j)
+    d[j] = std::clamp(f.parameters[j] + d[j], lower[j], upper[j]) - f.parameters[j];
+  f.refit_shift = d;
+  f.adequacy = test_adequacy(noise, r - A * d, static_cast<int>(A.cols()), p.settings.significance);
 }
 
 // Step 1: the baseline calibrated and judged.
@@ -103,53 +118,59 @@ Fit fit_baseline(const DiagnosisProblem& p, CountingModel& model) {
   const calibration::CalibrationResult r = calibration::calibrate_sequential(
       calibration_problem(p, p.parameters, prior.sd, {}),
       [&](const Eigen::VectorXd& x) { return model(ModelPoint{x}, 0); }, opt);
-  Fit f = judge_fit(p, model, "baseline", ModelPoint{r.solution}, static_cast<int>(np));
+  Fit f = realise_fit(p, model, "baseline", ModelPoint{r.solution});
   f.parameters = r.solution;
   f.sigma = r.sigma;
   f.calibration_runs = static_cast<int>(r.forward_runs());
   return f;
 }
 
-// Step 2: the baseline's sensitivities and the candidates' signatures at the fit, by common
-// random numbers (realisations 1..n of each point against the same realisations at the fit).
-void measure_signatures(const DiagnosisProblem& p, CountingModel& model, const Fit& base,
-                        const std::vector<Eigen::VectorXd>& at_fit, DiagnosisResult& out) {
-  const int n = std::min(p.settings.signature_seeds, static_cast<int>(at_fit.size()));
-  const std::vector<Eigen::VectorXd> neutral_baseline(at_fit.begin(), at_fit.begin() + n);
-  const Eigen::VectorXd& x = base.parameters;
+// The baseline's sensitivities at the fit by common random numbers: realisations 1..n of a
+// step along each parameter against the same realisations at the fit.
+Eigen::MatrixXd measure_sensitivities(const DiagnosisProblem& p, CountingModel& model, const Fit& base) {
+  const int n = std::min(p.settings.signature_seeds, static_cast<int>(base.realisation_features.size()));
+  const std::vector<Eigen::VectorXd> at_fit(base.realisation_features.begin(), base.realisation_features.begin() + n);
   std::vector<std::pair<ModelPoint, int>> jobs;
   std::vector<double> steps;
   for (std::size_t j = 0; j < p.parameters.size(); ++j) {
     const Parameter& par = p.parameters[j];
     double h = p.settings.sensitivity_step * (par.upper - par.lower);
-    if (x[static_cast<Eigen::Index>(j)] + h > par.upper) h = -h;
+    if (base.parameters[static_cast<Eigen::Index>(j)] + h > par.upper) h = -h;
     steps.push_back(h);
-    Eigen::VectorXd xs = x;
+    Eigen::VectorXd xs = base.parameters;
     xs[static_cast<Eigen::Index>(j)] += h;
     for (int s = 1; s <= n; ++s) jobs.emplace_back(ModelPoint{xs}, s);
   }
+  const std::vector<Eigen::VectorXd> ys = model.batch(jobs);
+  Eigen::MatrixXd J(static_cast<Eigen::Index>(p.features.size()), static_cast<Eigen::Index>(p.parameters.size()));
+  for (std::size_t j = 0; j < p.parameters.size(); ++j) {
+    const auto first = ys.begin() + static_cast<std::ptrdiff_t>(j * static_cast<std::size_t>(n));
+    J.col(static_cast<Eigen::Index>(j)) = signature_from_pairs(at_fit, {first, first + n}, steps[j]).mean;
+  }
+  return J;
+}
+
+// Step 2: every candidate's signature at the fit (its neutral and probe values, realisations
+// 1..n of each) and the score tests against the residual.
+void measure_signatures(const DiagnosisProblem& p, CountingModel& model, DiagnosisResult& out) {
+  const int n = std::min(p.settings.signature_seeds, p.settings.replicates);
+  const Eigen::VectorXd& x = out.baseline.parameters;
+  std::vector<std::pair<ModelPoint, int>> jobs;
   for (std::size_t k = 0; k < p.candidates.size(); ++k) {
     const Candidate& c = p.candidates[k];
     for (int s = 1; s <= n; ++s) jobs.emplace_back(ModelPoint{x, static_cast<int>(k), c.neutral()}, s);
     for (int s = 1; s <= n; ++s) jobs.emplace_back(ModelPoint{x, static_cast<int>(k), c.probe}, s);
   }
   const std::vector<Eigen::VectorXd> ys = model.batch(jobs);
-  const auto slice = [&](std::size_t first) {
-    return std::vector<Eigen::VectorXd>(ys.begin() + static_cast<std::ptrdiff_t>(first),
-                                        ys.begin() + static_cast<std::ptrdiff_t>(first + static_cast<std::size_t>(n)));
-  };
-  out.baseline_sensitivity.resize(static_cast<Eigen::Index>(p.features.size()), static_cast<Eigen::Index>(p.parameters.size()));
-  std::size_t at = 0;
-  for (std::size_t j = 0; j < p.parameters.size(); ++j, at += static_cast<std::size_t>(n))
-    out.baseline_sensitivity.col(static_cast<Eigen::Index>(j)) = signature_from_pairs(neutral_baseline, slice(at), steps[j]).mean;
   std::vector<double> ranges;
-  for (const Candidate& c : p.candidates) {
-    out.signatures.push_back(signature_from_pairs(slice(at), slice(at + static_cast<std::size_t>(n)), c.probe - c.neutral()));
-    at += 2 * static_cast<std::size_t>(n);
+  for (std::size_t k = 0; k < p.candidates.size(); ++k) {
+    const Candidate& c = p.candidates[k];
+    const auto first = ys.begin() + static_cast<std::ptrdiff_t>(2 * k * static_cast<std::size_t>(n));
+    out.signatures.push_back(signature_from_pairs({first, first + n}, {first + n, first + 2 * n}, c.probe - c.neutral()));
     ranges.push_back(c.parameter.upper - c.neutral());
   }
-  out.scores = score_candidates(base.noise, out.baseline_sensitivity, out.signatures, ranges,
-                                measured_values(p) - base.mean_features);
+  out.scores = score_candidates(out.baseline.noise, out.baseline_sensitivity, out.signatures, ranges,
+                                measured_values(p) - out.baseline.mean_features);
 }
 
 // Step 3: candidate k's extended model calibrated from the baseline's fit and judged.
@@ -183,12 +204,19 @@ ExtendedFit extend(const DiagnosisProblem& p, CountingModel& model, const Diagno
       [&](const Eigen::VectorXd& x) { return model(point(x), 0); }, opt);
   ExtendedFit e;
   e.candidate = k;
-  e.fit = judge_fit(p, model, c.name, point(r.solution), static_cast<int>(np + 1));
+  e.fit = realise_fit(p, model, c.name, point(r.solution));
   e.fit.parameters = r.solution;
   e.fit.sigma = r.sigma;
   e.fit.calibration_runs = static_cast<int>(r.forward_runs());
   e.fit.strength_at_upper_bound = r.solution[static_cast<Eigen::Index>(np)] >= c.parameter.upper - 1e-3 * range;
-  e.chi_square_common = d.baseline.noise.whiten(Eigen::VectorXd(measured_values(p) - e.fit.mean_features)).squaredNorm();
+  Eigen::MatrixXd A(d.baseline_sensitivity.rows(), d.baseline_sensitivity.cols() + 1);
+  A << d.baseline_sensitivity, d.signatures[static_cast<std::size_t>(k)].mean;
+  Eigen::VectorXd lo(static_cast<Eigen::Index>(np + 1)), hi(static_cast<Eigen::Index>(np + 1));
+  for (std::size_t j = 0; j <= np; ++j) lo[static_cast<Eigen::Index>(j)] = params[j].lower, hi[static_cast<Eigen::Index>(j)] = params[j].upper;
+  Fit common = e.fit;
+  judge_refit(p, common, A, lo, hi, d.baseline.noise);
+  judge_refit(p, e.fit, A, lo, hi, e.fit.noise);
+  e.chi_square_common = common.adequacy.chi_square;
   e.likelihood_ratio_p = boundary_likelihood_ratio_p(d.baseline.adequacy.chi_square, e.chi_square_common);
   e.bic = bayesian_information_criterion(e.chi_square_common, static_cast<int>(np + 1),
                                          static_cast<int>(p.features.size()));
@@ -266,6 +294,9 @@ DiagnosisResult diagnose(const DiagnosisProblem& p, const DiagnosisForward& forw
   DiagnosisResult d;
   say("step 1: calibrating the baseline and judging it against the data");
   d.baseline = fit_baseline(p, model);
+  d.baseline_sensitivity = measure_sensitivities(p, model, d.baseline);
+  const calibration::Problem bounds = calibration_problem(p, p.parameters, measured_sd(p), {});
+  judge_refit(p, d.baseline, d.baseline_sensitivity, bounds.lower(), bounds.upper(), d.baseline.noise);
   const int nf = static_cast<int>(p.features.size()), np = static_cast<int>(p.parameters.size());
   d.baseline_bic = bayesian_information_criterion(d.baseline.adequacy.chi_square, np, nf);
   if (p.settings.replicates < 8)
@@ -277,7 +308,7 @@ DiagnosisResult diagnose(const DiagnosisProblem& p, const DiagnosisForward& forw
     return d;
   }
   say("step 2: the candidates' signatures and score tests");
-  measure_signatures(p, model, d.baseline, d.baseline.realisation_features, d);
+  measure_signatures(p, model, d);
   const std::vector<int> significant = significant_candidates(d.scores, p.settings.significance);
   say("step 3: calibrating the extended models of the leading candidates");
   for (std::size_t r = 0; r < significant.size() && static_cast<int>(r) < p.settings.extend_at_most; ++r)

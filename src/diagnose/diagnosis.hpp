@@ -82,7 +82,8 @@ struct Fit {
   Eigen::VectorXd mean_features;  // over realisations 1..R at the fit
   std::vector<Eigen::VectorXd> realisation_features;  // realisations 1..R at the fit
   NoiseModel noise;
-  AdequacyTest adequacy;
+  Eigen::VectorXd refit_shift;    // the linearised refit's parameter shift (judged residual: m - ybar - A shift)
+  AdequacyTest adequacy;          // of the residual after the linearised refit
   bool strength_at_upper_bound = false;  // extended: the mechanism's strength pinned at its physical top
   int calibration_runs = 0;
 };
