@@ -98,8 +98,12 @@ void judge_refit(const DiagnosisProblem& p, Fit& f, const Eigen::MatrixXd& A, co
                  const Eigen::VectorXd& upper, const NoiseModel& noise) {
   const Eigen::VectorXd r = measured_values(p) - f.mean_features;
   Eigen::VectorXd d = noise.whiten(A).completeOrthogonalDecomposition().solve(noise.whiten(r));
-  for (Eigen::Index j = 0; j < d.size(); ++j)
-    d[j] = std::clamp(f.parameters[j] + d[j], lower[j], upper[j]) - f.parameters[j];
+  f.held_at_bound.assign(static_cast<std::size_t>(d.size()), false);
+  for (Eigen::Index j = 0; j < d.size(); ++j) {
+    const double moved = std::clamp(f.parameters[j] + d[j], lower[j], upper[j]) - f.parameters[j];
+    f.held_at_bound[static_cast<std::size_t>(j)] = moved != d[j];
+    d[j] = moved;
+  }
   f.refit_shift = d;
   f.adequacy = test_adequacy(noise, r - A * d, static_cast<int>(A.cols()), p.settings.significance);
 }
@@ -169,8 +173,16 @@ void measure_signatures(const DiagnosisProblem& p, CountingModel& model, Diagnos
     out.signatures.push_back(signature_from_pairs({first, first + n}, {first + n, first + 2 * n}, c.probe - c.neutral()));
     ranges.push_back(c.parameter.upper - c.neutral());
   }
-  out.scores = score_candidates(out.baseline.noise, out.baseline_sensitivity, out.signatures, ranges,
-                                measured_values(p) - out.baseline.mean_features);
+  // The residual the candidates must explain is the refit's: what the baseline's parameters
+  // cannot absorb inside their ranges. A parameter the refit holds at a bound can absorb no
+  // more in the direction the data ask for, so only the others' sensitivities are projected out.
+  const Fit& b = out.baseline;
+  std::vector<Eigen::Index> free;
+  for (std::size_t j = 0; j < b.held_at_bound.size(); ++j)
+    if (!b.held_at_bound[j]) free.push_back(static_cast<Eigen::Index>(j));
+  const Eigen::MatrixXd absorbable = out.baseline_sensitivity(Eigen::all, free);
+  out.scores = score_candidates(b.noise, absorbable, out.signatures, ranges,
+                                measured_values(p) - b.mean_features - out.baseline_sensitivity * b.refit_shift);
 }
 
 // Step 3: candidate k's extended model calibrated from the baseline's fit and judged.

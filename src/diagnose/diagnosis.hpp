@@ -83,6 +83,7 @@ struct Fit {
   std::vector<Eigen::VectorXd> realisation_features;  // realisations 1..R at the fit
   NoiseModel noise;
   Eigen::VectorXd refit_shift;    // the linearised refit's parameter shift (judged residual: m - ybar - A shift)
+  std::vector<bool> held_at_bound;  // per parameter: the refit wanted to move it past its bound
   AdequacyTest adequacy;          // of the residual after the linearised refit
   bool strength_at_upper_bound = false;  // extended: the mechanism's strength pinned at its physical top
   int calibration_runs = 0;

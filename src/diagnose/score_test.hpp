@@ -9,8 +9,12 @@
 // Score test of phi_k = neutral against phi_k > neutral (the physics allows one sign: a
 // friction, a damping ratio, a bond strength cannot be negative; signatures are taken
 // toward the allowed side): z_k = h_perp . e / |h_perp|, standard normal under the null
-// (e ~ N(0, P) after the fit), one-sided p_k = P(Z >= z_k); p-values adjusted for testing K
-// candidates by Holm's step-down method (Holm 1979, Scand. J. Statist. 6, 65-70).
+// (e ~ N(0, P) after the fit), one-sided p_k = P(Z >= z_k). Under the null the z_k are jointly
+// normal with unit variances and correlations cos(h_perp_i, h_perp_j), so the p-values are
+// adjusted for testing K candidates by the single-step max-T method (Westfall & Young 1993,
+// "Resampling-based multiple testing", section 2.6): p_k_adj = P(max_j Z_j >= z_k) under that
+// law, by Monte Carlo. Two candidates with the same signature count as one test, where a
+// Bonferroni or Holm correction would count them twice.
 // Linearised estimate phi_k - neutral = h_perp . e / |h_perp|^2, standard deviation 1 / |h_perp|.
 // The cosine matrix of the h_perp says which candidates the data cannot tell apart.
 #pragma once
@@ -25,7 +29,7 @@ namespace colza::diagnose {
 struct CandidateScore {
   double z = 0.0;                   // score statistic (noise units)
   double p_value = 1.0;             // one-sided
-  double adjusted_p = 1.0;          // Holm
+  double adjusted_p = 1.0;          // max-T over the candidates
   double absorbed_fraction = 0.0;   // of the signature, by re-fitting the baseline's parameters
   double alignment = 0.0;           // cos(h_perp, P e): the share of the residual's direction it explains
   double estimate = 0.0;            // linearised phi - neutral (parameter units)
@@ -45,8 +49,10 @@ ScoreTests score_candidates(const NoiseModel& noise, const Eigen::MatrixXd& base
                             const std::vector<Signature>& signatures, const std::vector<double>& ranges,
                             const Eigen::VectorXd& residual);
 
-// Holm's step-down adjusted p-values (monotone, capped at 1), in the input's order.
-std::vector<double> holm_adjusted(const std::vector<double>& p);
+// Single-step max-T adjusted one-sided p-values of statistics z with null correlation C:
+// the share of `draws` samples Z ~ N(0, C) (a fixed seed: the same answer every time) whose
+// largest component reaches z_k.
+std::vector<double> max_t_adjusted(const std::vector<double>& z, const Eigen::MatrixXd& correlation, int draws = 200000);
 
 // The projector on the complement of the columns of g (whitened sensitivities).
 Eigen::MatrixXd complement_projector(const Eigen::MatrixXd& g);

@@ -96,14 +96,16 @@ Verdict decide(const DiagnosisProblem& p, const Fit& baseline, double baseline_b
   const ExtendedFit& best = *ok.front();
   v.cause = best.candidate;
   const Candidate& x = cands[static_cast<std::size_t>(best.candidate)];
-  // The runner-up: a significant candidate whose projected signature the data cannot tell
-  // from the cause's (a BIC difference between their fits is then calibration noise), or
-  // another acceptable extended model within "positive evidence" of the best's BIC.
-  for (int k : significant)
-    if (k != best.candidate && std::abs(scores.cosine(best.candidate, k)) >= p.settings.ambiguity_cosine) {
-      v.runner_up = k;
-      break;
-    }
+  // The runner-up: a candidate whose projected signature the data cannot tell from the
+  // cause's (significant or not: along nearly the same direction its score differs from the
+  // cause's by the noise of the signatures, and a BIC difference between their fits by the
+  // calibrations' noise), or another acceptable extended model within "positive evidence"
+  // of the best's BIC.
+  for (std::size_t k = 0; k < cands.size(); ++k) {
+    const int other = static_cast<int>(k);
+    if (other == best.candidate || scores.cosine(best.candidate, other) < p.settings.ambiguity_cosine) continue;
+    if (v.runner_up < 0 || scores.scores[k].z > scores.scores[static_cast<std::size_t>(v.runner_up)].z) v.runner_up = other;
+  }
   if (v.runner_up < 0)
     for (const ExtendedFit* e : ok)
       if (e != &best && e->bic - best.bic < kPositiveEvidence) {

@@ -139,6 +139,18 @@ DiagnosisResult run(const World& w, const DiagnosisProblem& p) {
   return diagnose(p, [&](const ModelPoint& x, int k) { return w.scaled(w.unit_features(x, k)); });
 }
 
+// The score tests and the fits, for a failure's message.
+std::string details(const DiagnosisResult& d) {
+  std::string s = " [baseline at " + std::to_string(d.baseline.parameters[0]) + ", " +
+                  std::to_string(d.baseline.parameters[1]) + "; scores:";
+  for (const auto& c : d.scores.scores)
+    s += " z " + std::to_string(c.z) + " adj.p " + std::to_string(c.adjusted_p) + ";";
+  for (const auto& e : d.extended)
+    s += " extended " + std::to_string(e.candidate) + " chi2 " + std::to_string(e.fit.adequacy.chi_square) + " bic " +
+         std::to_string(e.bic) + ";";
+  return s + "]";
+}
+
 World world_with(int hidden, const Vec& g) {
   World w;
   w.signatures = {kRolling, kPlastic, kViscous};
@@ -155,7 +167,7 @@ TEST(DiagnoseIdentity, NoHiddenEffectGivesNoSignificantDiscrepancy) {
   const World w = world_with(-1, Vec::Zero());
   for (int seed : kDataSeeds) {
     const DiagnosisResult d = run(w, problem(w, seed, three_candidates()));
-    EXPECT_EQ(d.verdict.kind, VerdictKind::kNoDiscrepancy) << "data seed " << seed << ": " << d.verdict.text;
+    EXPECT_EQ(d.verdict.kind, VerdictKind::kNoDiscrepancy) << "data seed " << seed << ": " << d.verdict.text << details(d);
   }
 }
 
@@ -163,7 +175,7 @@ TEST(DiagnoseIdentity, HiddenRollingResistanceIsNamed) {
   const World w = world_with(0, kRolling);
   for (int seed : kDataSeeds) {
     const DiagnosisResult d = run(w, problem(w, seed, three_candidates()));
-    EXPECT_EQ(d.verdict.kind, VerdictKind::kExplained) << "data seed " << seed << ": " << d.verdict.text;
+    EXPECT_EQ(d.verdict.kind, VerdictKind::kExplained) << "data seed " << seed << ": " << d.verdict.text << details(d);
     EXPECT_EQ(d.verdict.cause, 0) << d.verdict.text;
   }
 }
@@ -172,7 +184,7 @@ TEST(DiagnoseIdentity, HiddenPlasticityIsNamed) {
   const World w = world_with(1, kPlastic);
   for (int seed : kDataSeeds) {
     const DiagnosisResult d = run(w, problem(w, seed, three_candidates()));
-    EXPECT_EQ(d.verdict.kind, VerdictKind::kExplained) << "data seed " << seed << ": " << d.verdict.text;
+    EXPECT_EQ(d.verdict.kind, VerdictKind::kExplained) << "data seed " << seed << ": " << d.verdict.text << details(d);
     EXPECT_EQ(d.verdict.cause, 1) << d.verdict.text;
   }
 }
@@ -184,7 +196,7 @@ TEST(DiagnoseIdentity, TwoCandidatesWithTheSameSignatureAreAmbiguous) {
   cands.push_back(candidate("load_induced_cohesion", MechanismKind::kCohesion));
   for (int seed : kDataSeeds) {
     const DiagnosisResult d = run(w, problem(w, seed, cands));
-    EXPECT_EQ(d.verdict.kind, VerdictKind::kAmbiguous) << "data seed " << seed << ": " << d.verdict.text;
+    EXPECT_EQ(d.verdict.kind, VerdictKind::kAmbiguous) << "data seed " << seed << ": " << d.verdict.text << details(d);
     EXPECT_NE(d.verdict.experiment.find("repose"), std::string::npos) << d.verdict.experiment;
   }
 }
@@ -194,8 +206,8 @@ TEST(DiagnoseIdentity, AnEffectOutsideTheCandidatesIsNotAttributed) {
   w.out_of_list = kOutOfList * (five_noise_units() / kOutOfList.cwiseAbs().maxCoeff());
   for (int seed : kDataSeeds) {
     const DiagnosisResult d = run(w, problem(w, seed, three_candidates()));
-    EXPECT_NE(d.verdict.kind, VerdictKind::kExplained) << "data seed " << seed << ": " << d.verdict.text;
-    EXPECT_NE(d.verdict.kind, VerdictKind::kNoDiscrepancy) << "data seed " << seed << ": " << d.verdict.text;
+    EXPECT_NE(d.verdict.kind, VerdictKind::kExplained) << "data seed " << seed << ": " << d.verdict.text << details(d);
+    EXPECT_NE(d.verdict.kind, VerdictKind::kNoDiscrepancy) << "data seed " << seed << ": " << d.verdict.text << details(d);
   }
 }
 
