@@ -1,6 +1,8 @@
-// `colza diagnose` on small DEM samples with an effect hidden in the data (see
-// diagnose_dem_cases.hpp): the diagnosis must name it without being told; data without one
-// must pass; the seed study over three data seeds per case runs under the label full.
+// `colza diagnose` end to end on small DEM samples (diagnose_dem_cases.hpp): data made by
+// colza without a hidden effect, at seeds the diagnosis never uses, must come out "no
+// significant discrepancy"; a spec with a mistake is refused before any run (exit 2, the
+// spec, the key and the reason). The cases with a hidden effect run under the label full
+// (tests/full/test_diagnose_dem_hidden.cpp).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -10,32 +12,39 @@
 
 using namespace colza::testing;
 
-namespace {
-
-std::string verdict_of(const nlohmann::json& s) { return s["verdict"]["kind"].get<std::string>(); }
-std::string cause_of(const nlohmann::json& s) { return s["verdict"]["cause"].get<std::string>(); }
-
-// COLZA_DIAGNOSE_KEEP=<folder>: each case's data, runs and report are kept in <folder>/<test>
-// (to read the report; a second run reuses every finished DEM run).
-std::filesystem::path case_dir(const ScratchDir& scratch) {
-  const char* keep = std::getenv("COLZA_DIAGNOSE_KEEP");
-  if (!keep) return scratch.path();
-  const auto dir = std::filesystem::path(keep) / ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
-}  // namespace
-
-TEST(DiagnoseDem, HiddenElastoPlasticContactIsNamed) {
-  const ScratchDir dir;
-  const nlohmann::json s = diagnose_small({"elasto_plastic", 2.2, {}}, 1, case_dir(dir));
-  EXPECT_EQ(verdict_of(s), "explained") << s["verdict"]["text"];
-  EXPECT_EQ(cause_of(s), "elasto_plastic") << s["verdict"]["text"];
-}
-
 TEST(DiagnoseDem, DataWithoutAHiddenEffectPass) {
   const ScratchDir dir;
-  const nlohmann::json s = diagnose_small({"", 0.0, {}}, 1, case_dir(dir));
-  EXPECT_EQ(verdict_of(s), "no significant discrepancy") << s["verdict"]["text"];
+  const nlohmann::json s = diagnose_small({"", 0.0, {}}, 1, dir.path());
+  EXPECT_EQ(s["verdict"]["kind"], "no significant discrepancy") << s["verdict"]["text"];
+  EXPECT_GT(s["forward_runs"].get<int>(), 10);
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "out" / "report.md"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "out" / "model-baseline-oedometer.toml"));
+}
+
+TEST(DiagnoseDem, ASpecWithAMistakeIsRefusedBeforeAnyRun) {
+  const ScratchDir dir;
+  std::string spec = small_spec(6, [](std::size_t) { return 1.0; });
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    std::string s = spec;
+    s.replace(s.find(from), from.size(), to);
+    return s;
+  };
+  struct Case {
+    std::string text, key;
+  };
+  const std::vector<Case> cases = {
+      {replace("uncertainty = 2", "uncertainty = -2"), "tests[0].features[0].uncertainty"},
+      {replace("name = \"mu_pp\"\nkey = \"particle.friction\"", "name = \"mu_pp\"\nkey = \"particle.frictoin\""),
+       "parameters[0].key"},
+      {replace("name = \"elasto_plastic\"", "name = \"elasto_plastic\"\nprobe = 9.0"), "candidates[1].probe"},
+      {replace("[settings]", "[settings]\nsignificanse = 0.05"), "settings.significanse"},
+  };
+  for (const Case& c : cases) {
+    const std::string file = dir.write("spec.toml", c.text);
+    const CliResult r = run_colza("diagnose --spec " + file + " --out " + (dir.path() / "out").string() + " --quiet");
+    EXPECT_EQ(r.exit_code, 2) << c.key << ": " << r.stderr_text;
+    EXPECT_NE(r.stderr_text.find(c.key), std::string::npos) << c.key << ": " << r.stderr_text;
+    EXPECT_NE(r.stderr_text.find("spec.toml"), std::string::npos) << r.stderr_text;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "out" / "summary.json"));
+  }
 }
