@@ -12,8 +12,12 @@ namespace {
 
 std::string fmt(double v) { return format_significant(v, 3); }
 
+// An extended model that explains the data: it passes its adequacy test with degrees of
+// freedom left to fail it (with as many parameters as features it fits anything), improves
+// on the baseline significantly, and needs no strength beyond the physical range.
 bool acceptable(const ExtendedFit& e, double alpha) {
-  return e.fit.adequacy.passes && e.likelihood_ratio_p < alpha && !e.fit.strength_at_upper_bound;
+  return e.fit.adequacy.passes && e.fit.adequacy.degrees_of_freedom > 0 && e.likelihood_ratio_p < alpha &&
+         !e.fit.strength_at_upper_bound;
 }
 
 // The features the remaining residual is largest in, as "name (z = ...)".
@@ -81,6 +85,10 @@ Verdict decide(const DiagnosisProblem& p, const Fit& baseline, double baseline_b
       if (e.fit.strength_at_upper_bound)
         why += " " + n + " would need more than its physical range (its strength stops at the top, " +
                fmt(cands[static_cast<std::size_t>(e.candidate)].parameter.upper) + ");";
+      else if (e.fit.adequacy.degrees_of_freedom == 0)
+        why += " with " + n + " the model has as many parameters as there are features, so it fits them whatever the "
+               "cause (chi2 " + fmt(baseline.adequacy.chi_square) + " -> " + fmt(e.fit.adequacy.chi_square) +
+               "): nothing is left to test it with; more features (another test, another load) would;";
       else if (!e.fit.adequacy.passes)
         why += " with " + n + " the misfit falls from chi2 = " + fmt(baseline.adequacy.chi_square) + " to " +
                fmt(e.fit.adequacy.chi_square) + " but stays significant (p = " + fmt(e.fit.adequacy.p_value) + ");";
