@@ -40,6 +40,9 @@ using detail::particle_pair_force;
 using detail::V3;
 using detail::kHasBatchedKernel;
 using detail::particle_pairs_batched;
+using detail::particle_pairs_in_lanes;
+using detail::PairBatch;
+using detail::RollingLanes;
 using detail::wall_pair_force;
 using detail::wall_pairs_batched;
 using detail::ForceLoopTotals;
@@ -77,6 +80,27 @@ struct GenericLaw {
   const SlotStateLayout& layout;
   bool bond_new_contacts;
 };
+// RollingLaw: the baseline's slots with the elastic-plastic rolling moment
+// (is_baseline_with_rolling): particle pairs in the batched kernels with the moment's lanes
+// (engine/rolling_lanes.hpp), compiled for `Bond`; the generic law for the pairs that are not
+// steady lanes, for wall pairs and for several particle materials. Same bits as the generic
+// law (ForcePaths.TheRollingLanesGiveTheGenericTierBits).
+template <class Bond>
+struct RollingLaw {
+  const Bond& bond;
+  const ElasticPlasticRolling& rolling;
+  GenericLaw generic;
+};
+// The baseline's slots with the elastic-plastic rolling moment: the RollingLaw's combination.
+bool is_baseline_with_rolling(const ContactModel& m) {
+  return std::holds_alternative<LinearNormal>(m.normal) && std::holds_alternative<CoulombTangential>(m.tangential) &&
+         std::holds_alternative<NoDamping>(m.damping) && std::holds_alternative<ElasticPlasticRolling>(m.rolling) &&
+         (std::holds_alternative<NoBond>(m.bond) || std::holds_alternative<ContactBond>(m.bond));
+}
+template <class Law>
+inline constexpr bool kIsRollingLaw = false;
+template <class Bond>
+inline constexpr bool kIsRollingLaw<RollingLaw<Bond>> = true;
 
 // Particle pairs [begin, end) in pair order: the batched kernel for the baseline with one
 // particle material, the scalar reference otherwise (same results, see pair_batch.hpp); the
@@ -89,7 +113,23 @@ template <class Law, class Out, class Sink>
   const Index* first = pp.first.data();
   const Index* second = pp.second.data();
   ContactHistory* history = pp.history.data();
-  if constexpr (std::is_same_v<Law, GenericLaw>) {
+  if constexpr (kIsRollingLaw<Law>) {
+    if (pairs.particle_material_count() != 1) {
+      particle_pair_range(law.generic, p, pairs, dt, pp, begin, end, out, sink);
+      return;
+    }
+    const GenericLaw& generic = law.generic;
+    const std::size_t stride = generic.layout.stride;
+    double* state = pp.slot_state.data();
+    RollingLanes<PairBatch::kLanes> moments(law.rolling, state, stride, generic.layout.rolling);
+    const auto scalar_pair = [&](std::size_t k, V3& f, V3& t_i, V3& t_j) {
+      return generic_particle_pair_force(generic.model, generic.layout, generic.bond_new_contacts, p, pairs, dt,
+                                         half_dt, first[k], second[k], history[k], state + k * stride, f, t_i, t_j,
+                                         sink);
+    };
+    particle_pairs_in_lanes(law.bond, moments, scalar_pair, p, pairs, dt, half_dt, first, second, history, begin, end,
+                            out, sink);
+  } else if constexpr (std::is_same_v<Law, GenericLaw>) {
     const std::size_t stride = law.layout.stride;
     double* state = pp.slot_state.data();
     for (std::size_t c = begin; c < end; ++c) {
@@ -130,7 +170,9 @@ template <class Law, class Out, class Sink>
   const double half_dt = 0.5 * dt;
   const Index* particle = pw.particle.data();
   ContactHistory* history = pw.history.data();
-  if constexpr (std::is_same_v<Law, GenericLaw>) {
+  if constexpr (kIsRollingLaw<Law>) {
+    wall_pair_range(law.generic, p, wall, pairs, dt, pw, begin, end, out, sink);
+  } else if constexpr (std::is_same_v<Law, GenericLaw>) {
     const std::size_t stride = law.layout.stride;
     double* state = pw.slot_state.data();
     for (std::size_t c = begin; c < end; ++c) {
@@ -329,6 +371,16 @@ void Stepper::compute_forces(World& world) {
             using Bond = std::decay_t<decltype(bond)>;
             if constexpr (kHasBatchedKernel<LinearNormal, CoulombTangential, Bond>)
               run(BaselineLaw<Bond>{LinearNormal{}, CoulombTangential{}, bond, bond_new});
+          },
+          physics_.model.bond);
+    } else if (is_baseline_with_rolling(physics_.model) && !physics_.generic_tier_only) {
+      const GenericLaw generic{physics_.model, world.contacts.slot_state_layout(), bond_new};
+      const auto& rolling = std::get<ElasticPlasticRolling>(physics_.model.rolling);
+      std::visit(
+          [&](const auto& bond) {
+            using Bond = std::decay_t<decltype(bond)>;
+            if constexpr (kHasBatchedKernel<LinearNormal, CoulombTangential, Bond>)
+              run(RollingLaw<Bond>{bond, rolling, generic});
           },
           physics_.model.bond);
     } else {

@@ -14,6 +14,7 @@
 
 #include <cstring>
 #include <map>
+#include <string>
 #include <utility>
 
 #ifdef _OPENMP
@@ -42,6 +43,8 @@ struct Setup {
   int rebuild_every = 0;      // > 0: also rebuild the candidate lists every this many steps
   bool generic_tier = false;  // run the generic law even for the baseline (contact/generic_law.hpp)
   bool mechanisms = false;    // rolling resistance, viscous dashpots and the elasto-plastic normal law on
+  bool rolling = false;       // rolling resistance alone on the paper's law (its lanes in the batched kernel)
+  RollingForm rolling_form = RollingForm::kYade;
 };
 
 World make_world(const Setup& setup) {
@@ -105,6 +108,7 @@ PhysicsSettings physics(const Setup& setup) {
     s.model.damping = ViscousDamping{0.2, 0.1};
     s.model.rolling = ElasticPlasticRolling{1.0, 0.1, RollingForm::kYade, true};
   }
+  if (setup.rolling) s.model.rolling = ElasticPlasticRolling{1.0, 0.05, setup.rolling_form, true};
   s.integrator.damping = 0.3;
   s.integrator.gravity = Vec3(0.0, 0.0, -9.81);
   s.time_step.automatic = false;
@@ -419,6 +423,35 @@ TEST(ForcePaths, TheGenericTierWithMechanismsGivesTheOneThreadBitsOnThreads) {
   expect_same_pair_energies(one.ledger, two.ledger);
   EXPECT_EQ(std::memcmp(&one.ledger.rolling_dissipated, &three.ledger.rolling_dissipated, sizeof(double)), 0);
   EXPECT_EQ(std::memcmp(&one.ledger.viscous_dissipated, &three.ledger.viscous_dissipated, sizeof(double)), 0);
+}
+
+// Rolling resistance on the paper's law runs its particle pairs in the batched kernel with the
+// moment's lanes (engine/rolling_lanes.hpp): the generic tier's bits, both forms of the
+// spring, bonds breaking, the cap dissipating, with a wide skin (candidates apart) and on two
+// threads.
+TEST(ForcePaths, TheRollingLanesGiveTheGenericTierBits) {
+  for (const RollingForm form : {RollingForm::kYade, RollingForm::kPfc})
+    for (const bool bonds : {false, true}) {
+      SCOPED_TRACE(std::string(to_string(form)) + (bonds ? ", bonds" : ", no bonds"));
+      const PathRun generic = run_path({.bonds = bonds, .generic_tier = true, .rolling = true, .rolling_form = form}, 1);
+      const PathRun lanes = run_path({.bonds = bonds, .rolling = true, .rolling_form = form}, 1);
+      EXPECT_GT(generic.ledger.rolling_dissipated, 0.0);
+      if (bonds) EXPECT_GT(generic.broken_tension + generic.broken_shear, 0u);
+      EXPECT_EQ(generic.broken_tension, lanes.broken_tension);
+      EXPECT_EQ(generic.broken_shear, lanes.broken_shear);
+      expect_same_state(generic.world, lanes.world);
+      expect_same_pair_energies(generic.ledger, lanes.ledger);
+      EXPECT_EQ(std::memcmp(&generic.ledger.rolling_dissipated, &lanes.ledger.rolling_dissipated, sizeof(double)), 0);
+    }
+  const PathRun generic = run_path({.skin = 2.5e-3, .generic_tier = true, .rolling = true}, 1);
+  const PathRun lanes = run_path({.skin = 2.5e-3, .rolling = true}, 1);
+  expect_same_state(generic.world, lanes.world);
+  const PathRun two = run_path({.bonds = true, .rolling = true}, 2);
+  const PathRun one = run_path({.bonds = true, .generic_tier = true, .rolling = true}, 1);
+  EXPECT_EQ(two.threaded_steps, 300u);
+  expect_same_state(one.world, two.world);
+  expect_same_pair_energies(one.ledger, two.ledger);
+  EXPECT_EQ(std::memcmp(&one.ledger.rolling_dissipated, &two.ledger.rolling_dissipated, sizeof(double)), 0);
 }
 
 // Three ranges: a middle range has boundary particles and outgoing pairs at once.
