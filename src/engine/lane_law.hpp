@@ -32,6 +32,7 @@ struct LaneForce {
   double fsx, fsy, fsz;
   double fn, slip;
   bool falls_back;
+  double trial_x, trial_y, trial_z;  // Fs before the Coulomb cap (N): the cap slid it where they differ
 };
 
 // kn, ks (N/m), mu: the pair's parameters; cn, cs (N): bond strengths (unused without bonds).
@@ -76,6 +77,9 @@ template <bool kBonds, bool kSlip>
   const bool slides = !bonded & (fs2 > max_fs * max_fs);
   const double scale = max_fs / std::sqrt(fs2);
   const double cx = slides ? fx * scale : fx, cy = slides ? fy * scale : fy, cz = slides ? fz * scale : fz;
+  out.trial_x = fx;
+  out.trial_y = fy;
+  out.trial_z = fz;
   if constexpr (kSlip)
     out.slip = slides ? (((fx - cx) * cx + (fy - cy) * cy) + (fz - cz) * cz) / ks : 0.0;
   else

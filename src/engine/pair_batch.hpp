@@ -21,9 +21,10 @@
 // to the chunks that are not quiet.
 //
 // Used for the built-in slot combination (LinearNormal, CoulombTangential, NoBond or
-// ContactBond) with one particle material, and for that combination with the elastic-plastic
-// rolling moment (its columns in engine/rolling_lanes.hpp, the generic law for the pairs that
-// are not steady lanes); anything else takes the scalar loop.
+// ContactBond) with one particle material, and for that combination with one mechanism of the
+// generic tier, the elastic-plastic rolling moment or viscous dashpots (engine/rolling_lanes.hpp,
+// engine/viscous_lanes.hpp; the generic law for the pairs that are not steady lanes); anything
+// else takes the scalar loop.
 #pragma once
 #include <cmath>
 #include <type_traits>
@@ -31,7 +32,6 @@
 #include "engine/lane_law.hpp"
 #include "engine/lane_transpose.hpp"
 #include "engine/pair_force.hpp"
-#include "engine/rolling_lanes.hpp"
 
 namespace colza::detail {
 
@@ -125,15 +125,32 @@ inline void fill_lanes(PairBatch& b, const ParticleArrays& p, const ContactHisto
   }
 }
 
+// What the lanes compute besides the paper's law: a mechanism of the generic tier computed lane
+// by lane (RollingLanes, engine/rolling_lanes.hpp; ViscousLanes, engine/viscous_lanes.hpp), or
+// nothing. A mechanism states kMoment (a moment on body 2 added to both torques: lane()) or
+// kDashpots (the force replaced by the damped one: damp()), its invariant parameters `law`,
+// and how it fills its columns (fill), keeps a steady lane's state (keep) and books its
+// energy (book).
+struct NoLaneMechanism {
+  static constexpr bool kMoment = false;
+  static constexpr bool kDashpots = false;
+  struct {
+  } law;
+  template <class Batch>
+  void fill(const Batch&, const ParticleArrays&) {}
+  void keep(std::size_t, int) {}
+  template <class Sink>
+  void book(Sink&, int) const {}
+};
+
 // The law for every lane (physics.md section 2, steps 1-6, for a contact that existed at the
 // start of the step), with the pair parameters q of the one particle material: the pair
-// geometry here, the law in lane_law.hpp, and the moments' law (`moments`: none, or the
-// rolling moment of rolling_lanes.hpp, added to both torques). Each line is the scalar
-// reference's expression; see pair_force.hpp, contact_law.hpp and generic_law.hpp for the
-// physics.
-template <class Bond, bool kSlip, class Moments>
+// geometry here, the law in lane_law.hpp, and the `mechanism`'s (NoLaneMechanism above). Each
+// line is the scalar reference's expression; see pair_force.hpp, contact_law.hpp and
+// generic_law.hpp for the physics.
+template <class Bond, bool kSlip, class Mechanism>
 inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& q, double dt, double half_dt,
-                          Moments& moments) {
+                          Mechanism& mechanism) {
   static_assert(std::is_same_v<Bond, NoBond> || std::is_same_v<Bond, ContactBond>,
                 "the lanes compute the contact bond's rule only (kHasBatchedKernel)");
   constexpr bool kBonds = std::is_same_v<Bond, ContactBond>;
@@ -144,7 +161,7 @@ inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& 
   }
   const double kn = q.kn, ks = q.ks, mu = q.friction;
   const int count = b.count;
-  [[maybe_unused]] const auto moment_law = moments.law;
+  [[maybe_unused]] const auto mechanism_law = mechanism.law;
 #pragma omp simd
   for (int l = 0; l < count; ++l) {
     // Geometry: normal n from 1 to 2, overlap un, contact point in the middle of the overlap.
@@ -170,19 +187,27 @@ inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& 
     // Twist about the previous normal: dt/2 (w1 + w2) . n_old (rad).
     const double hx = b.prev_normal[0][l], hy = b.prev_normal[1][l], hz = b.prev_normal[2][l];
     const double twist = half_dt * (((wix + wjx) * hx + (wiy + wjy) * hy) + (wiz + wjz) * hz);
-    const LaneForce r = lane_law<kBonds, kSlip>(LaneContact{nx, ny, nz, overlap, sx, sy, sz, twist, hx, hy, hz,
+    LaneForce r = lane_law<kBonds, kSlip>(LaneContact{nx, ny, nz, overlap, sx, sy, sz, twist, hx, hy, hz,
                                                             b.fs[0][l], b.fs[1][l], b.fs[2][l], b.bonded[l] != 0.0},
                                                 kn, ks, mu, cn, cs);
     b.slip[l] = r.slip;
     b.fallback[l] = r.falls_back ? 1.0 : 0.0;
+    if constexpr (Mechanism::kDashpots) {
+      const auto d = mechanism.template damp<kSlip>(l, mechanism_law, nx, ny, nz, vn, sx, sy, sz, r.fn, r.trial_x,
+                                                    r.trial_y, r.trial_z, r.fsx, r.fsy, r.fsz,
+                                                    kBonds ? b.bonded[l] : 0.0, kn, ks, mu, dt);
+      r.Fx = d.Fx;
+      r.Fy = d.Fy;
+      r.Fz = d.Fz;
+    }
     // Torques arm x F of the force on body 2, plus the moment on body 2 (body 1 gets the
     // opposite of both).
     const double Fx = r.Fx, Fy = r.Fy, Fz = r.Fz;
     double tix = aiy * Fz - aiz * Fy, tiy = aiz * Fx - aix * Fz, tiz = aix * Fy - aiy * Fx;
     double tjx = ajy * Fz - ajz * Fy, tjy = ajz * Fx - ajx * Fz, tjz = ajx * Fy - ajy * Fx;
-    if constexpr (Moments::kMoment) {
+    if constexpr (Mechanism::kMoment) {
       // Relative rotation of the step (w2 - w1) dt (rad).
-      const LaneMoment m = moments.template lane<kSlip>(l, moment_law, nx, ny, nz, hx, hy, hz, twist, (wjx - wix) * dt,
+      const auto m = mechanism.template lane<kSlip>(l, mechanism_law, nx, ny, nz, hx, hy, hz, twist, (wjx - wix) * dt,
                                                         (wjy - wiy) * dt, (wjz - wiz) * dt, b.ri[l], b.rj[l], r.fn,
                                                         ks);
       tix = tix + m.mx;
@@ -204,20 +229,20 @@ inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& 
 // The paper's law alone in the lanes.
 template <class Bond, bool kSlip>
 inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& q, double dt, double half_dt) {
-  NoLaneMoment none;
+  NoLaneMechanism none;
   compute_lanes<Bond, kSlip>(b, bond, q, dt, half_dt, none);
 }
 
-// Particle pairs [begin, end) through the batched kernel, with the lanes' moments `moments`
-// (NoLaneMoment or RollingLanes, engine/rolling_lanes.hpp). `out.carries(c, i, j, f, t_i, t_j)`
+// Particle pairs [begin, end) through the batched kernel, with the lanes' `mechanism`
+// (NoLaneMechanism, RollingLanes or ViscousLanes). `out.carries(c, i, j, f, t_i, t_j)`
 // receives, in pair order, the force f on body 2 (body 1 gets -f) and the torques t_i, t_j
 // (arm_i x f and arm_j x f plus the moment on body 2; body 1 gets -t_i); `out.none(c)` each
 // pair without force (in a quiet chunk after the chunk's carrying pairs, so it must touch
 // nothing that carries() adds to). A pair that is not a steady lane goes to
 // `scalar_pair(c, f, t_i, t_j)`, the scalar law from its untouched history, which returns
 // whether it carries force. Requires one particle material (the caller checks).
-template <class Bond, class Moments, class ScalarPair, class Out, class Sink>
-[[gnu::always_inline]] inline void particle_pairs_in_lanes(const Bond& bond_law, Moments& moments,
+template <class Bond, class Mechanism, class ScalarPair, class Out, class Sink>
+[[gnu::always_inline]] inline void particle_pairs_in_lanes(const Bond& bond_law, Mechanism& mechanism,
                                                            ScalarPair&& scalar_pair, const ParticleArrays& p,
                                                            const PairTable& pairs, double dt, double half_dt,
                                                            const Index* first, const Index* second,
@@ -228,10 +253,8 @@ template <class Bond, class Moments, class ScalarPair, class Out, class Sink>
   const auto steady = [&](std::size_t k, int l) {  // steady contact: the lane's result
     keep_lane_history(history[k], b, l);
     sink.slip(b.slip[l]);
-    if constexpr (Moments::kMoment) {
-      moments.keep(k, l);
-      sink.rolling(moments.dissipated[l]);
-    }
+    mechanism.keep(k, l);
+    mechanism.book(sink, l);
     out.carries(k, first[k], second[k], V3{b.f[0][l], b.f[1][l], b.f[2][l]},
                 V3{b.torque_i[0][l], b.torque_i[1][l], b.torque_i[2][l]},
                 V3{b.torque_j[0][l], b.torque_j[1][l], b.torque_j[2][l]});
@@ -248,8 +271,8 @@ template <class Bond, class Moments, class ScalarPair, class Out, class Sink>
     const std::size_t chunk_begin = c;
     c = note_chunk(b, p.radius.data(), first, second, history, c, end);
     fill_lanes(b, p, history);
-    moments.fill(b);
-    compute_lanes<Bond, Sink::kKeepsSlip>(b, bond_law, q, dt, half_dt, moments);
+    mechanism.fill(b, p);
+    compute_lanes<Bond, Sink::kKeepsSlip>(b, bond_law, q, dt, half_dt, mechanism);
     if (!quiet_chunk(b, p)) {
       consume_in_pair_order(b, chunk_begin, c, steady, scalar);
       continue;
@@ -268,7 +291,7 @@ template <class Normal, class Tangential, class Bond, class Out, class Sink>
                                                           double half_dt, const Index* first, const Index* second,
                                                           ContactHistory* history, std::size_t begin, std::size_t end,
                                                           Out& out, Sink& sink) {
-  NoLaneMoment none;
+  NoLaneMechanism none;
   const auto scalar_pair = [&](std::size_t k, V3& f, V3& t_i, V3& t_j) {
     V3 arm_i, arm_j;
     if (!particle_pair_force(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt,

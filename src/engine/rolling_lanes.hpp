@@ -8,22 +8,15 @@
 #include <algorithm>
 #include <cstddef>
 #include "contact/rolling_laws.hpp"
+#include "core/particles.hpp"
 #include "engine/lane_rolling.hpp"
 
 namespace colza::detail {
 
-// The lanes compute no moment: the paper's law (the baseline's kernel).
-struct NoLaneMoment {
-  static constexpr bool kMoment = false;
-  struct {
-  } law;
-  template <class Batch>
-  void fill(const Batch&) {}
-};
-
 template <int kLanes>
 struct RollingLanes {
   static constexpr bool kMoment = true;
+  static constexpr bool kDashpots = false;
   LaneRollingLaw law;
   double* state;       // slot-state rows, `stride` doubles per pair
   std::size_t stride;  // doubles per row
@@ -40,7 +33,7 @@ struct RollingLanes {
 
   // The stored moments of the batch's lanes.
   template <class Batch>
-  void fill(const Batch& b) {
+  void fill(const Batch& b, const ParticleArrays&) {
     for (int l = 0; l < b.count; ++l) {
       const double* row = state + b.pair[l] * stride + offset;
       mr[0][l] = row[0];
@@ -72,6 +65,10 @@ struct RollingLanes {
     row[0] = mr_new[0][l];
     row[1] = mr_new[1][l];
     row[2] = mr_new[2][l];
+  }
+  template <class Sink>
+  void book(Sink& sink, int l) const {
+    sink.rolling(dissipated[l]);
   }
 };
 

@@ -20,6 +20,8 @@
 #include "engine/pair_batch.hpp"
 #include "engine/pair_force.hpp"
 #include "engine/pair_sinks.hpp"
+#include "engine/rolling_lanes.hpp"
+#include "engine/viscous_lanes.hpp"
 #include "engine/wall_batch.hpp"
 #include "engine/wall_pair_force.hpp"
 
@@ -43,6 +45,7 @@ using detail::particle_pairs_batched;
 using detail::particle_pairs_in_lanes;
 using detail::PairBatch;
 using detail::RollingLanes;
+using detail::ViscousLanes;
 using detail::wall_pair_force;
 using detail::wall_pairs_batched;
 using detail::ForceLoopTotals;
@@ -80,27 +83,48 @@ struct GenericLaw {
   const SlotStateLayout& layout;
   bool bond_new_contacts;
 };
-// RollingLaw: the baseline's slots with the elastic-plastic rolling moment
-// (is_baseline_with_rolling): particle pairs in the batched kernels with the moment's lanes
-// (engine/rolling_lanes.hpp), compiled for `Bond`; the generic law for the pairs that are not
-// steady lanes, for wall pairs and for several particle materials. Same bits as the generic
-// law (ForcePaths.TheRollingLanesGiveTheGenericTierBits).
-template <class Bond>
-struct RollingLaw {
+// MechanismLaw: the baseline's slots with one mechanism the lanes compute (`Mechanism`: the
+// elastic-plastic rolling moment or viscous dashpots; lane_mechanism_of): particle pairs in the
+// batched kernels with the mechanism's lanes (engine/rolling_lanes.hpp,
+// engine/viscous_lanes.hpp), compiled for `Bond` and the mechanism; the generic law for the
+// pairs that are not steady lanes, for wall pairs, for several particle materials and for
+// dt = 0 (where the generic law leaves out the tangential dashpot). Same
+// bits as the generic law (ForcePaths.TheMechanismLanesGiveTheGenericTierBits).
+template <class Bond, class Mechanism>
+struct MechanismLaw {
   const Bond& bond;
-  const ElasticPlasticRolling& rolling;
+  const Mechanism& mechanism;
   GenericLaw generic;
 };
-// The baseline's slots with the elastic-plastic rolling moment: the RollingLaw's combination.
-bool is_baseline_with_rolling(const ContactModel& m) {
-  return std::holds_alternative<LinearNormal>(m.normal) && std::holds_alternative<CoulombTangential>(m.tangential) &&
-         std::holds_alternative<NoDamping>(m.damping) && std::holds_alternative<ElasticPlasticRolling>(m.rolling) &&
-         (std::holds_alternative<NoBond>(m.bond) || std::holds_alternative<ContactBond>(m.bond));
-}
 template <class Law>
-inline constexpr bool kIsRollingLaw = false;
-template <class Bond>
-inline constexpr bool kIsRollingLaw<RollingLaw<Bond>> = true;
+inline constexpr bool kIsMechanismLaw = false;
+template <class Bond, class Mechanism>
+inline constexpr bool kIsMechanismLaw<MechanismLaw<Bond, Mechanism>> = true;
+
+// The lanes of a mechanism over the pairs' slot-state rows `state`.
+inline RollingLanes<PairBatch::kLanes> lanes_of(const ElasticPlasticRolling& rolling, double* state,
+                                                const SlotStateLayout& layout) {
+  return RollingLanes<PairBatch::kLanes>(rolling, state, layout.stride, layout.rolling);
+}
+inline ViscousLanes<PairBatch::kLanes> lanes_of(const ViscousDamping& viscous, double*, const SlotStateLayout&) {
+  return ViscousLanes<PairBatch::kLanes>(viscous);
+}
+
+// Calls f(mechanism) when the model is the baseline's slots (linear, Coulomb, no bond or the
+// contact bond) with exactly one mechanism the lanes compute: the elastic-plastic rolling
+// moment (no damping) or viscous damping (no rolling). Returns whether it did.
+template <class F>
+bool with_lane_mechanism(const ContactModel& m, F&& f) {
+  if (!std::holds_alternative<LinearNormal>(m.normal) || !std::holds_alternative<CoulombTangential>(m.tangential) ||
+      !(std::holds_alternative<NoBond>(m.bond) || std::holds_alternative<ContactBond>(m.bond)))
+    return false;
+  const auto* rolling = std::get_if<ElasticPlasticRolling>(&m.rolling);
+  const auto* viscous = std::get_if<ViscousDamping>(&m.damping);
+  if (rolling && !viscous) f(*rolling);
+  else if (viscous && !rolling) f(*viscous);
+  else return false;
+  return true;
+}
 
 // Particle pairs [begin, end) in pair order: the batched kernel for the baseline with one
 // particle material, the scalar reference otherwise (same results, see pair_batch.hpp); the
@@ -113,22 +137,22 @@ template <class Law, class Out, class Sink>
   const Index* first = pp.first.data();
   const Index* second = pp.second.data();
   ContactHistory* history = pp.history.data();
-  if constexpr (kIsRollingLaw<Law>) {
-    if (pairs.particle_material_count() != 1) {
+  if constexpr (kIsMechanismLaw<Law>) {
+    if (pairs.particle_material_count() != 1 || !(dt > 0.0)) {
       particle_pair_range(law.generic, p, pairs, dt, pp, begin, end, out, sink);
       return;
     }
     const GenericLaw& generic = law.generic;
     const std::size_t stride = generic.layout.stride;
     double* state = pp.slot_state.data();
-    RollingLanes<PairBatch::kLanes> moments(law.rolling, state, stride, generic.layout.rolling);
+    auto mechanism = lanes_of(law.mechanism, state, generic.layout);
     const auto scalar_pair = [&](std::size_t k, V3& f, V3& t_i, V3& t_j) {
       return generic_particle_pair_force(generic.model, generic.layout, generic.bond_new_contacts, p, pairs, dt,
                                          half_dt, first[k], second[k], history[k], state + k * stride, f, t_i, t_j,
                                          sink);
     };
-    particle_pairs_in_lanes(law.bond, moments, scalar_pair, p, pairs, dt, half_dt, first, second, history, begin, end,
-                            out, sink);
+    particle_pairs_in_lanes(law.bond, mechanism, scalar_pair, p, pairs, dt, half_dt, first, second, history, begin,
+                            end, out, sink);
   } else if constexpr (std::is_same_v<Law, GenericLaw>) {
     const std::size_t stride = law.layout.stride;
     double* state = pp.slot_state.data();
@@ -170,7 +194,7 @@ template <class Law, class Out, class Sink>
   const double half_dt = 0.5 * dt;
   const Index* particle = pw.particle.data();
   ContactHistory* history = pw.history.data();
-  if constexpr (kIsRollingLaw<Law>) {
+  if constexpr (kIsMechanismLaw<Law>) {
     wall_pair_range(law.generic, p, wall, pairs, dt, pw, begin, end, out, sink);
   } else if constexpr (std::is_same_v<Law, GenericLaw>) {
     const std::size_t stride = law.layout.stride;
@@ -373,18 +397,19 @@ void Stepper::compute_forces(World& world) {
               run(BaselineLaw<Bond>{LinearNormal{}, CoulombTangential{}, bond, bond_new});
           },
           physics_.model.bond);
-    } else if (is_baseline_with_rolling(physics_.model) && !physics_.generic_tier_only) {
-      const GenericLaw generic{physics_.model, world.contacts.slot_state_layout(), bond_new};
-      const auto& rolling = std::get<ElasticPlasticRolling>(physics_.model.rolling);
-      std::visit(
-          [&](const auto& bond) {
-            using Bond = std::decay_t<decltype(bond)>;
-            if constexpr (kHasBatchedKernel<LinearNormal, CoulombTangential, Bond>)
-              run(RollingLaw<Bond>{bond, rolling, generic});
-          },
-          physics_.model.bond);
     } else {
-      run(GenericLaw{physics_.model, world.contacts.slot_state_layout(), bond_new});
+      const GenericLaw generic{physics_.model, world.contacts.slot_state_layout(), bond_new};
+      const auto in_lanes = [&](const auto& mechanism) {
+        using Mechanism = std::decay_t<decltype(mechanism)>;
+        std::visit(
+            [&](const auto& bond) {
+              using Bond = std::decay_t<decltype(bond)>;
+              if constexpr (kHasBatchedKernel<LinearNormal, CoulombTangential, Bond>)
+                run(MechanismLaw<Bond, Mechanism>{bond, mechanism, generic});
+            },
+            physics_.model.bond);
+      };
+      if (physics_.generic_tier_only || !with_lane_mechanism(physics_.model, in_lanes)) run(generic);
     }
   };
   if (sums_.damping_work)

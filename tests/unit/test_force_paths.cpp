@@ -45,6 +45,7 @@ struct Setup {
   bool mechanisms = false;    // rolling resistance, viscous dashpots and the elasto-plastic normal law on
   bool rolling = false;       // rolling resistance alone on the paper's law (its lanes in the batched kernel)
   RollingForm rolling_form = RollingForm::kYade;
+  bool viscous = false;       // viscous dashpots alone on the paper's law (their lanes in the batched kernel)
 };
 
 World make_world(const Setup& setup) {
@@ -109,6 +110,7 @@ PhysicsSettings physics(const Setup& setup) {
     s.model.rolling = ElasticPlasticRolling{1.0, 0.1, RollingForm::kYade, true};
   }
   if (setup.rolling) s.model.rolling = ElasticPlasticRolling{1.0, 0.05, setup.rolling_form, true};
+  if (setup.viscous) s.model.damping = ViscousDamping{0.3, 0.2};
   s.integrator.damping = 0.3;
   s.integrator.gravity = Vec3(0.0, 0.0, -9.81);
   s.time_step.automatic = false;
@@ -425,33 +427,53 @@ TEST(ForcePaths, TheGenericTierWithMechanismsGivesTheOneThreadBitsOnThreads) {
   EXPECT_EQ(std::memcmp(&one.ledger.viscous_dissipated, &three.ledger.viscous_dissipated, sizeof(double)), 0);
 }
 
-// Rolling resistance on the paper's law runs its particle pairs in the batched kernel with the
-// moment's lanes (engine/rolling_lanes.hpp): the generic tier's bits, both forms of the
-// spring, bonds breaking, the cap dissipating, with a wide skin (candidates apart) and on two
-// threads.
-TEST(ForcePaths, TheRollingLanesGiveTheGenericTierBits) {
-  for (const RollingForm form : {RollingForm::kYade, RollingForm::kPfc})
+// Rolling resistance or viscous damping on the paper's law runs its particle pairs in the
+// batched kernel with the mechanism's lanes (engine/rolling_lanes.hpp, viscous_lanes.hpp): the
+// generic tier's bits, both forms of the rolling spring, bonds breaking, the caps
+// dissipating, with a wide skin (candidates apart) and on two threads.
+TEST(ForcePaths, TheMechanismLanesGiveTheGenericTierBits) {
+  struct Mechanism {
+    const char* name;
+    bool rolling, viscous;
+    RollingForm form;
+  };
+  for (const Mechanism m : {Mechanism{"rolling, YADE's form", true, false, RollingForm::kYade},
+                            Mechanism{"rolling, PFC's form", true, false, RollingForm::kPfc},
+                            Mechanism{"viscous", false, true, RollingForm::kYade}}) {
     for (const bool bonds : {false, true}) {
-      SCOPED_TRACE(std::string(to_string(form)) + (bonds ? ", bonds" : ", no bonds"));
-      const PathRun generic = run_path({.bonds = bonds, .generic_tier = true, .rolling = true, .rolling_form = form}, 1);
-      const PathRun lanes = run_path({.bonds = bonds, .rolling = true, .rolling_form = form}, 1);
-      EXPECT_GT(generic.ledger.rolling_dissipated, 0.0);
+      SCOPED_TRACE(std::string(m.name) + (bonds ? ", bonds" : ", no bonds"));
+      const ::Setup lanes_setup{
+          .bonds = bonds, .rolling = m.rolling, .rolling_form = m.form, .viscous = m.viscous};
+      ::Setup generic_setup = lanes_setup;
+      generic_setup.generic_tier = true;
+      const PathRun generic = run_path(generic_setup, 1);
+      const PathRun lanes = run_path(lanes_setup, 1);
+      if (m.rolling) EXPECT_GT(generic.ledger.rolling_dissipated, 0.0);
+      if (m.viscous) EXPECT_GT(generic.ledger.viscous_dissipated, 0.0);
       if (bonds) EXPECT_GT(generic.broken_tension + generic.broken_shear, 0u);
       EXPECT_EQ(generic.broken_tension, lanes.broken_tension);
       EXPECT_EQ(generic.broken_shear, lanes.broken_shear);
       expect_same_state(generic.world, lanes.world);
       expect_same_pair_energies(generic.ledger, lanes.ledger);
       EXPECT_EQ(std::memcmp(&generic.ledger.rolling_dissipated, &lanes.ledger.rolling_dissipated, sizeof(double)), 0);
+      EXPECT_EQ(std::memcmp(&generic.ledger.viscous_dissipated, &lanes.ledger.viscous_dissipated, sizeof(double)), 0);
     }
-  const PathRun generic = run_path({.skin = 2.5e-3, .generic_tier = true, .rolling = true}, 1);
-  const PathRun lanes = run_path({.skin = 2.5e-3, .rolling = true}, 1);
-  expect_same_state(generic.world, lanes.world);
-  const PathRun two = run_path({.bonds = true, .rolling = true}, 2);
-  const PathRun one = run_path({.bonds = true, .generic_tier = true, .rolling = true}, 1);
-  EXPECT_EQ(two.threaded_steps, 300u);
-  expect_same_state(one.world, two.world);
-  expect_same_pair_energies(one.ledger, two.ledger);
-  EXPECT_EQ(std::memcmp(&one.ledger.rolling_dissipated, &two.ledger.rolling_dissipated, sizeof(double)), 0);
+    SCOPED_TRACE(std::string(m.name) + ", wide skin and two threads");
+    const ::Setup wide{.skin = 2.5e-3, .rolling = m.rolling, .rolling_form = m.form, .viscous = m.viscous};
+    ::Setup wide_generic = wide;
+    wide_generic.generic_tier = true;
+    expect_same_state(run_path(wide_generic, 1).world, run_path(wide, 1).world);
+    const ::Setup bonded{.bonds = true, .rolling = m.rolling, .rolling_form = m.form, .viscous = m.viscous};
+    ::Setup bonded_generic = bonded;
+    bonded_generic.generic_tier = true;
+    const PathRun two = run_path(bonded, 2);
+    const PathRun one = run_path(bonded_generic, 1);
+    EXPECT_EQ(two.threaded_steps, 300u);
+    expect_same_state(one.world, two.world);
+    expect_same_pair_energies(one.ledger, two.ledger);
+    EXPECT_EQ(std::memcmp(&one.ledger.rolling_dissipated, &two.ledger.rolling_dissipated, sizeof(double)), 0);
+    EXPECT_EQ(std::memcmp(&one.ledger.viscous_dissipated, &two.ledger.viscous_dissipated, sizeof(double)), 0);
+  }
 }
 
 // Three ranges: a middle range has boundary particles and outgoing pairs at once.
