@@ -38,11 +38,20 @@ struct LaneForce {
 // kn, ks (N/m), mu: the pair's parameters; cn, cs (N): bond strengths (unused without bonds).
 // kSlip: compute the slip energy (false when no energy ledger is kept: slip is then 0 and its
 // division is skipped; nothing else changes).
+// lane_law_of_force: the same with step 1's normal force fn (N) given (a normal law of the
+// lanes other than the linear spring).
+template <bool kBonds, bool kSlip>
+[[gnu::always_inline]] inline LaneForce lane_law_of_force(const LaneContact& c, double fn, double ks, double mu,
+                                                          double cn, double cs);
 template <bool kBonds, bool kSlip>
 [[gnu::always_inline]] inline LaneForce lane_law(const LaneContact& c, double kn, double ks, double mu, double cn,
                                                  double cs) {
   // Step 1: Fn = Kn un (N).
-  const double fn = kn * c.overlap;
+  return lane_law_of_force<kBonds, kSlip>(c, kn * c.overlap, ks, mu, cn, cs);
+}
+template <bool kBonds, bool kSlip>
+[[gnu::always_inline]] inline LaneForce lane_law_of_force(const LaneContact& c, double fn, double ks, double mu,
+                                                          double cn, double cs) {
   // Step 2: rotate the stored shear force into the new tangent plane:
   //   Fs -= Fs x (n_old x n);  Fs -= Fs x (twist n_old).
   const double rx = c.hy * c.nz - c.hz * c.ny, ry = c.hz * c.nx - c.hx * c.nz, rz = c.hx * c.ny - c.hy * c.nx;

@@ -127,13 +127,15 @@ inline void fill_lanes(PairBatch& b, const ParticleArrays& p, const ContactHisto
 
 // What the lanes compute besides the paper's law: a mechanism of the generic tier computed lane
 // by lane (RollingLanes, engine/rolling_lanes.hpp; ViscousLanes, engine/viscous_lanes.hpp), or
-// nothing. A mechanism states kMoment (a moment on body 2 added to both torques: lane()) or
-// kDashpots (the force replaced by the damped one: damp()), its invariant parameters `law`,
+// nothing. A mechanism states kMoment (a moment on body 2 added to both torques: lane()),
+// kDashpots (the force replaced by the damped one: damp()) or kNormal (the normal force in
+// place of the linear spring's: normal_force()), its invariant parameters `law`,
 // and how it fills its columns (fill), keeps a steady lane's state (keep) and books its
 // energy (book).
 struct NoLaneMechanism {
   static constexpr bool kMoment = false;
   static constexpr bool kDashpots = false;
+  static constexpr bool kNormal = false;
   struct {
   } law;
   template <class Batch>
@@ -187,9 +189,13 @@ inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& 
     // Twist about the previous normal: dt/2 (w1 + w2) . n_old (rad).
     const double hx = b.prev_normal[0][l], hy = b.prev_normal[1][l], hz = b.prev_normal[2][l];
     const double twist = half_dt * (((wix + wjx) * hx + (wiy + wjy) * hy) + (wiz + wjz) * hz);
-    LaneForce r = lane_law<kBonds, kSlip>(LaneContact{nx, ny, nz, overlap, sx, sy, sz, twist, hx, hy, hz,
-                                                            b.fs[0][l], b.fs[1][l], b.fs[2][l], b.bonded[l] != 0.0},
-                                                kn, ks, mu, cn, cs);
+    const LaneContact contact{nx, ny, nz, overlap, sx, sy, sz, twist, hx, hy, hz,
+                              b.fs[0][l], b.fs[1][l], b.fs[2][l], b.bonded[l] != 0.0};
+    // Step 1's normal force: the linear spring Kn un, or the mechanism's normal law.
+    double fn = kn * overlap;
+    if constexpr (Mechanism::kNormal)
+      fn = mechanism.normal_force(l, mechanism_law, overlap, kn, kBonds ? b.bonded[l] : 0.0);
+    LaneForce r = lane_law_of_force<kBonds, kSlip>(contact, fn, ks, mu, cn, cs);
     b.slip[l] = r.slip;
     b.fallback[l] = r.falls_back ? 1.0 : 0.0;
     if constexpr (Mechanism::kDashpots) {

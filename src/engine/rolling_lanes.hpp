@@ -17,6 +17,7 @@ template <int kLanes>
 struct RollingLanes {
   static constexpr bool kMoment = true;
   static constexpr bool kDashpots = false;
+  static constexpr bool kNormal = false;
   LaneRollingLaw law;
   double* state;       // slot-state rows, `stride` doubles per pair
   std::size_t stride;  // doubles per row

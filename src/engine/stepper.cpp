@@ -22,6 +22,7 @@
 #include "engine/pair_sinks.hpp"
 #include "engine/rolling_lanes.hpp"
 #include "engine/viscous_lanes.hpp"
+#include "engine/walton_braun_lanes.hpp"
 #include "engine/wall_batch.hpp"
 #include "engine/wall_pair_force.hpp"
 
@@ -46,6 +47,7 @@ using detail::particle_pairs_in_lanes;
 using detail::PairBatch;
 using detail::RollingLanes;
 using detail::ViscousLanes;
+using detail::WaltonBraunLanes;
 using detail::wall_pair_force;
 using detail::wall_pairs_batched;
 using detail::ForceLoopTotals;
@@ -84,9 +86,9 @@ struct GenericLaw {
   bool bond_new_contacts;
 };
 // MechanismLaw: the baseline's slots with one mechanism the lanes compute (`Mechanism`: the
-// elastic-plastic rolling moment or viscous dashpots; lane_mechanism_of): particle pairs in the
-// batched kernels with the mechanism's lanes (engine/rolling_lanes.hpp,
-// engine/viscous_lanes.hpp), compiled for `Bond` and the mechanism; the generic law for the
+// elastic-plastic rolling moment, viscous dashpots or the Walton-Braun normal law;
+// with_lane_mechanism): particle pairs in the batched kernels with the mechanism's lanes
+// (engine/rolling_lanes.hpp, viscous_lanes.hpp, walton_braun_lanes.hpp), compiled for `Bond` and the mechanism; the generic law for the
 // pairs that are not steady lanes, for wall pairs, for several particle materials and for
 // dt = 0 (where the generic law leaves out the tangential dashpot). Same
 // bits as the generic law (ForcePaths.TheMechanismLanesGiveTheGenericTierBits).
@@ -109,20 +111,29 @@ inline RollingLanes<PairBatch::kLanes> lanes_of(const ElasticPlasticRolling& rol
 inline ViscousLanes<PairBatch::kLanes> lanes_of(const ViscousDamping& viscous, double*, const SlotStateLayout&) {
   return ViscousLanes<PairBatch::kLanes>(viscous);
 }
+inline WaltonBraunLanes<PairBatch::kLanes> lanes_of(const WaltonBraunNormal& normal, double* state,
+                                                    const SlotStateLayout& layout) {
+  return WaltonBraunLanes<PairBatch::kLanes>(normal, state, layout.stride, layout.normal);
+}
 
-// Calls f(mechanism) when the model is the baseline's slots (linear, Coulomb, no bond or the
-// contact bond) with exactly one mechanism the lanes compute: the elastic-plastic rolling
-// moment (no damping) or viscous damping (no rolling). Returns whether it did.
+// Calls f(mechanism) when the model is the baseline's slots (linear, Coulomb, no damping, no
+// rolling, no bond or the contact bond) with exactly one of them changed to a mechanism the
+// lanes compute: the elastic-plastic rolling moment, viscous damping, or the Walton-Braun
+// normal law. Returns whether it did.
 template <class F>
 bool with_lane_mechanism(const ContactModel& m, F&& f) {
-  if (!std::holds_alternative<LinearNormal>(m.normal) || !std::holds_alternative<CoulombTangential>(m.tangential) ||
+  if (!std::holds_alternative<CoulombTangential>(m.tangential) ||
       !(std::holds_alternative<NoBond>(m.bond) || std::holds_alternative<ContactBond>(m.bond)))
     return false;
   const auto* rolling = std::get_if<ElasticPlasticRolling>(&m.rolling);
   const auto* viscous = std::get_if<ViscousDamping>(&m.damping);
-  if (rolling && !viscous) f(*rolling);
-  else if (viscous && !rolling) f(*viscous);
-  else return false;
+  const auto* walton_braun = std::get_if<WaltonBraunNormal>(&m.normal);
+  const bool linear = std::holds_alternative<LinearNormal>(m.normal);
+  const int mechanisms = (rolling != nullptr) + (viscous != nullptr) + (walton_braun != nullptr);
+  if (mechanisms != 1 || !(linear || walton_braun)) return false;
+  if (rolling) f(*rolling);
+  else if (viscous) f(*viscous);
+  else f(*walton_braun);
   return true;
 }
 
