@@ -128,14 +128,17 @@ inline void fill_lanes(PairBatch& b, const ParticleArrays& p, const ContactHisto
 // What the lanes compute besides the paper's law: a mechanism of the generic tier computed lane
 // by lane (RollingLanes, engine/rolling_lanes.hpp; ViscousLanes, engine/viscous_lanes.hpp), or
 // nothing. A mechanism states kMoment (a moment on body 2 added to both torques: lane()),
-// kDashpots (the force replaced by the damped one: damp()) or kNormal (the normal force in
-// place of the linear spring's: normal_force()), its invariant parameters `law`,
+// kDashpots (the force replaced by the damped one: damp()), kNormal (the normal force in
+// place of the linear spring's: normal_force()) or kBondStrengths (each lane's bond strengths
+// in place of the contact bond's, and whether its bond forms now, which makes it fall back:
+// bond_strengths()), its invariant parameters `law`,
 // and how it fills its columns (fill), keeps a steady lane's state (keep) and books its
 // energy (book).
 struct NoLaneMechanism {
   static constexpr bool kMoment = false;
   static constexpr bool kDashpots = false;
   static constexpr bool kNormal = false;
+  static constexpr bool kBondStrengths = false;
   struct {
   } law;
   template <class Batch>
@@ -195,9 +198,16 @@ inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& 
     double fn = kn * overlap;
     if constexpr (Mechanism::kNormal)
       fn = mechanism.normal_force(l, mechanism_law, overlap, kn, kBonds ? b.bonded[l] : 0.0);
-    LaneForce r = lane_law_of_force<kBonds, kSlip>(contact, fn, ks, mu, cn, cs);
+    double lane_cn = cn, lane_cs = cs, bond_forms = 0.0;
+    if constexpr (Mechanism::kBondStrengths) {
+      const auto strengths = mechanism.bond_strengths(l, mechanism_law, fn);
+      lane_cn = strengths.normal;
+      lane_cs = strengths.shear;
+      bond_forms = strengths.forms;
+    }
+    LaneForce r = lane_law_of_force<kBonds, kSlip>(contact, fn, ks, mu, lane_cn, lane_cs);
     b.slip[l] = r.slip;
-    b.fallback[l] = r.falls_back ? 1.0 : 0.0;
+    b.fallback[l] = r.falls_back ? 1.0 : bond_forms;
     if constexpr (Mechanism::kDashpots) {
       const auto d = mechanism.template damp<kSlip>(l, mechanism_law, nx, ny, nz, vn, sx, sy, sz, r.fn, r.trial_x,
                                                     r.trial_y, r.trial_z, r.fsx, r.fsy, r.fsz,

@@ -18,6 +18,7 @@ struct RollingLanes {
   static constexpr bool kMoment = true;
   static constexpr bool kDashpots = false;
   static constexpr bool kNormal = false;
+  static constexpr bool kBondStrengths = false;
   LaneRollingLaw law;
   double* state;       // slot-state rows, `stride` doubles per pair
   std::size_t stride;  // doubles per row

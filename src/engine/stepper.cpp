@@ -23,6 +23,7 @@
 #include "engine/rolling_lanes.hpp"
 #include "engine/viscous_lanes.hpp"
 #include "engine/walton_braun_lanes.hpp"
+#include "engine/load_induced_lanes.hpp"
 #include "engine/wall_batch.hpp"
 #include "engine/wall_pair_force.hpp"
 
@@ -48,6 +49,7 @@ using detail::PairBatch;
 using detail::RollingLanes;
 using detail::ViscousLanes;
 using detail::WaltonBraunLanes;
+using detail::LoadInducedLanes;
 using detail::wall_pair_force;
 using detail::wall_pairs_batched;
 using detail::ForceLoopTotals;
@@ -86,9 +88,10 @@ struct GenericLaw {
   bool bond_new_contacts;
 };
 // MechanismLaw: the baseline's slots with one mechanism the lanes compute (`Mechanism`: the
-// elastic-plastic rolling moment, viscous dashpots or the Walton-Braun normal law;
-// with_lane_mechanism): particle pairs in the batched kernels with the mechanism's lanes
-// (engine/rolling_lanes.hpp, viscous_lanes.hpp, walton_braun_lanes.hpp), compiled for `Bond` and the mechanism; the generic law for the
+// elastic-plastic rolling moment, viscous dashpots, the Walton-Braun normal law or load-induced
+// cohesion; with_lane_mechanism): particle pairs in the batched kernels with the mechanism's
+// lanes (engine/rolling_lanes.hpp, viscous_lanes.hpp, walton_braun_lanes.hpp,
+// load_induced_lanes.hpp), compiled for `Bond` and the mechanism; the generic law for the
 // pairs that are not steady lanes, for wall pairs, for several particle materials and for
 // dt = 0 (where the generic law leaves out the tangential dashpot). Same
 // bits as the generic law (ForcePaths.TheMechanismLanesGiveTheGenericTierBits).
@@ -115,25 +118,33 @@ inline WaltonBraunLanes<PairBatch::kLanes> lanes_of(const WaltonBraunNormal& nor
                                                     const SlotStateLayout& layout) {
   return WaltonBraunLanes<PairBatch::kLanes>(normal, state, layout.stride, layout.normal);
 }
+inline LoadInducedLanes<PairBatch::kLanes> lanes_of(const LoadInducedBond& bond, double* state,
+                                                    const SlotStateLayout& layout) {
+  return LoadInducedLanes<PairBatch::kLanes>(bond, state, layout.stride, layout.bond);
+}
+// Load-induced cohesion runs the lanes' contact-bond rule with each lane's strengths
+// (LoadInducedLanes): this bond's own strengths are never read.
+constexpr ContactBond kStrengthsPerLane{};
 
 // Calls f(mechanism) when the model is the baseline's slots (linear, Coulomb, no damping, no
 // rolling, no bond or the contact bond) with exactly one of them changed to a mechanism the
-// lanes compute: the elastic-plastic rolling moment, viscous damping, or the Walton-Braun
-// normal law. Returns whether it did.
+// lanes compute: the elastic-plastic rolling moment, viscous damping, the Walton-Braun
+// normal law or load-induced cohesion. Returns whether it did.
 template <class F>
 bool with_lane_mechanism(const ContactModel& m, F&& f) {
-  if (!std::holds_alternative<CoulombTangential>(m.tangential) ||
-      !(std::holds_alternative<NoBond>(m.bond) || std::holds_alternative<ContactBond>(m.bond)))
-    return false;
+  if (!std::holds_alternative<CoulombTangential>(m.tangential)) return false;
   const auto* rolling = std::get_if<ElasticPlasticRolling>(&m.rolling);
   const auto* viscous = std::get_if<ViscousDamping>(&m.damping);
   const auto* walton_braun = std::get_if<WaltonBraunNormal>(&m.normal);
+  const auto* load_induced = std::get_if<LoadInducedBond>(&m.bond);
   const bool linear = std::holds_alternative<LinearNormal>(m.normal);
-  const int mechanisms = (rolling != nullptr) + (viscous != nullptr) + (walton_braun != nullptr);
+  const int mechanisms =
+      (rolling != nullptr) + (viscous != nullptr) + (walton_braun != nullptr) + (load_induced != nullptr);
   if (mechanisms != 1 || !(linear || walton_braun)) return false;
   if (rolling) f(*rolling);
   else if (viscous) f(*viscous);
-  else f(*walton_braun);
+  else if (walton_braun) f(*walton_braun);
+  else f(*load_induced);
   return true;
 }
 
@@ -412,13 +423,17 @@ void Stepper::compute_forces(World& world) {
       const GenericLaw generic{physics_.model, world.contacts.slot_state_layout(), bond_new};
       const auto in_lanes = [&](const auto& mechanism) {
         using Mechanism = std::decay_t<decltype(mechanism)>;
-        std::visit(
-            [&](const auto& bond) {
-              using Bond = std::decay_t<decltype(bond)>;
-              if constexpr (kHasBatchedKernel<LinearNormal, CoulombTangential, Bond>)
-                run(MechanismLaw<Bond, Mechanism>{bond, mechanism, generic});
-            },
-            physics_.model.bond);
+        if constexpr (std::is_same_v<Mechanism, LoadInducedBond>) {
+          run(MechanismLaw<ContactBond, Mechanism>{kStrengthsPerLane, mechanism, generic});
+        } else {
+          std::visit(
+              [&](const auto& bond) {
+                using Bond = std::decay_t<decltype(bond)>;
+                if constexpr (kHasBatchedKernel<LinearNormal, CoulombTangential, Bond>)
+                  run(MechanismLaw<Bond, Mechanism>{bond, mechanism, generic});
+              },
+              physics_.model.bond);
+        }
       };
       if (physics_.generic_tier_only || !with_lane_mechanism(physics_.model, in_lanes)) run(generic);
     }

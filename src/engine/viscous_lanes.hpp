@@ -16,6 +16,7 @@ struct ViscousLanes {
   static constexpr bool kMoment = false;
   static constexpr bool kDashpots = true;
   static constexpr bool kNormal = false;
+  static constexpr bool kBondStrengths = false;
   LaneViscousLaw law;
   alignas(64) double mass[kLanes];        // m* (kg)
   alignas(64) double dissipated[kLanes];  // J, the dashpots' this step

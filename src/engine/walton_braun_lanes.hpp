@@ -17,6 +17,7 @@ struct WaltonBraunLanes {
   static constexpr bool kMoment = false;
   static constexpr bool kDashpots = false;
   static constexpr bool kNormal = true;
+  static constexpr bool kBondStrengths = false;
   LaneWaltonBraunLaw law;
   double* state;       // slot-state rows, `stride` doubles per pair
   std::size_t stride;  // doubles per row

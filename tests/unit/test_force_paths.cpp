@@ -47,6 +47,7 @@ struct Setup {
   RollingForm rolling_form = RollingForm::kYade;
   bool viscous = false;       // viscous dashpots alone on the paper's law (their lanes in the batched kernel)
   bool walton_braun = false;  // the Walton-Braun normal law alone in place of the linear spring (its lanes)
+  bool load_induced = false;  // load-induced cohesion alone (its lanes): bonds forming under load and breaking
 };
 
 World make_world(const Setup& setup) {
@@ -113,6 +114,7 @@ PhysicsSettings physics(const Setup& setup) {
   if (setup.rolling) s.model.rolling = ElasticPlasticRolling{1.0, 0.05, setup.rolling_form, true};
   if (setup.viscous) s.model.damping = ViscousDamping{0.3, 0.2};
   if (setup.walton_braun) s.model.normal = WaltonBraunNormal{2.0};
+  if (setup.load_induced) s.model.bond = LoadInducedBond{0.02, 1.0, 1.5, 0.08, 0.1};
   s.integrator.damping = 0.3;
   s.integrator.gravity = Vec3(0.0, 0.0, -9.81);
   s.time_step.automatic = false;
@@ -437,18 +439,20 @@ TEST(ForcePaths, TheGenericTierWithMechanismsGivesTheOneThreadBitsOnThreads) {
 TEST(ForcePaths, TheMechanismLanesGiveTheGenericTierBits) {
   struct Mechanism {
     const char* name;
-    bool rolling, viscous, walton_braun;
+    bool rolling, viscous, walton_braun, load_induced;
     RollingForm form;
   };
-  for (const Mechanism m : {Mechanism{"rolling, YADE's form", true, false, false, RollingForm::kYade},
-                            Mechanism{"rolling, PFC's form", true, false, false, RollingForm::kPfc},
-                            Mechanism{"viscous", false, true, false, RollingForm::kYade},
-                            Mechanism{"Walton-Braun", false, false, true, RollingForm::kYade}}) {
+  for (const Mechanism m : {Mechanism{"rolling, YADE's form", true, false, false, false, RollingForm::kYade},
+                            Mechanism{"rolling, PFC's form", true, false, false, false, RollingForm::kPfc},
+                            Mechanism{"viscous", false, true, false, false, RollingForm::kYade},
+                            Mechanism{"Walton-Braun", false, false, true, false, RollingForm::kYade},
+                            Mechanism{"load-induced", false, false, false, true, RollingForm::kYade}}) {
     for (const bool bonds : {false, true}) {
+      if (bonds && m.load_induced) continue;  // its own bonds
       SCOPED_TRACE(std::string(m.name) + (bonds ? ", bonds" : ", no bonds"));
       const ::Setup lanes_setup{
           .bonds = bonds, .rolling = m.rolling, .rolling_form = m.form, .viscous = m.viscous,
-                   .walton_braun = m.walton_braun};
+                   .walton_braun = m.walton_braun, .load_induced = m.load_induced};
       ::Setup generic_setup = lanes_setup;
       generic_setup.generic_tier = true;
       const PathRun generic = run_path(generic_setup, 1);
@@ -456,7 +460,7 @@ TEST(ForcePaths, TheMechanismLanesGiveTheGenericTierBits) {
       if (m.rolling) EXPECT_GT(generic.ledger.rolling_dissipated, 0.0);
       if (m.viscous) EXPECT_GT(generic.ledger.viscous_dissipated, 0.0);
       if (m.walton_braun) EXPECT_GT(generic.ledger.plastic_dissipated, 0.0);
-      if (bonds) EXPECT_GT(generic.broken_tension + generic.broken_shear, 0u);
+      if (bonds || m.load_induced) EXPECT_GT(generic.broken_tension + generic.broken_shear, 0u);
       EXPECT_EQ(generic.broken_tension, lanes.broken_tension);
       EXPECT_EQ(generic.broken_shear, lanes.broken_shear);
       expect_same_state(generic.world, lanes.world);
@@ -467,12 +471,12 @@ TEST(ForcePaths, TheMechanismLanesGiveTheGenericTierBits) {
     }
     SCOPED_TRACE(std::string(m.name) + ", wide skin and two threads");
     const ::Setup wide{.skin = 2.5e-3, .rolling = m.rolling, .rolling_form = m.form, .viscous = m.viscous,
-                   .walton_braun = m.walton_braun};
+                   .walton_braun = m.walton_braun, .load_induced = m.load_induced};
     ::Setup wide_generic = wide;
     wide_generic.generic_tier = true;
     expect_same_state(run_path(wide_generic, 1).world, run_path(wide, 1).world);
     const ::Setup bonded{.bonds = true, .rolling = m.rolling, .rolling_form = m.form, .viscous = m.viscous,
-                   .walton_braun = m.walton_braun};
+                   .walton_braun = m.walton_braun, .load_induced = m.load_induced};
     ::Setup bonded_generic = bonded;
     bonded_generic.generic_tier = true;
     const PathRun two = run_path(bonded, 2);
