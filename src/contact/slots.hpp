@@ -11,8 +11,10 @@
 // declared by kStateDoubles and kept in columns (contact/slot_state.hpp).
 //
 // Two tiers run a model (engine/stepper.cpp): the baseline (linear, Coulomb, no damping, no
-// rolling, no bond or the contact bond) runs the batched kernels; any other combination runs
-// the generic law (contact/generic_law.hpp), one loop with a run-time choice per slot.
+// rolling, no bond or the contact bond) runs the batched kernels, and so do its particle pairs
+// with one lane mechanism (rolling resistance or viscous damping alone); any other
+// combination runs the generic law (contact/generic_law.hpp), one loop with a run-time choice
+// per slot.
 #pragma once
 #include <variant>
 #include "contact/bond_laws.hpp"

@@ -32,16 +32,26 @@ struct LaneForce {
   double fsx, fsy, fsz;
   double fn, slip;
   bool falls_back;
+  double trial_x, trial_y, trial_z;  // Fs before the Coulomb cap (N): the cap slid it where they differ
 };
 
 // kn, ks (N/m), mu: the pair's parameters; cn, cs (N): bond strengths (unused without bonds).
 // kSlip: compute the slip energy (false when no energy ledger is kept: slip is then 0 and its
 // division is skipped; nothing else changes).
+// lane_law_of_force: the same with step 1's normal force fn (N) given (a normal law of the
+// lanes other than the linear spring).
+template <bool kBonds, bool kSlip>
+[[gnu::always_inline]] inline LaneForce lane_law_of_force(const LaneContact& c, double fn, double ks, double mu,
+                                                          double cn, double cs);
 template <bool kBonds, bool kSlip>
 [[gnu::always_inline]] inline LaneForce lane_law(const LaneContact& c, double kn, double ks, double mu, double cn,
                                                  double cs) {
   // Step 1: Fn = Kn un (N).
-  const double fn = kn * c.overlap;
+  return lane_law_of_force<kBonds, kSlip>(c, kn * c.overlap, ks, mu, cn, cs);
+}
+template <bool kBonds, bool kSlip>
+[[gnu::always_inline]] inline LaneForce lane_law_of_force(const LaneContact& c, double fn, double ks, double mu,
+                                                          double cn, double cs) {
   // Step 2: rotate the stored shear force into the new tangent plane:
   //   Fs -= Fs x (n_old x n);  Fs -= Fs x (twist n_old).
   const double rx = c.hy * c.nz - c.hz * c.ny, ry = c.hz * c.nx - c.hx * c.nz, rz = c.hx * c.ny - c.hy * c.nx;
@@ -76,6 +86,9 @@ template <bool kBonds, bool kSlip>
   const bool slides = !bonded & (fs2 > max_fs * max_fs);
   const double scale = max_fs / std::sqrt(fs2);
   const double cx = slides ? fx * scale : fx, cy = slides ? fy * scale : fy, cz = slides ? fz * scale : fz;
+  out.trial_x = fx;
+  out.trial_y = fy;
+  out.trial_z = fz;
   if constexpr (kSlip)
     out.slip = slides ? (((fx - cx) * cx + (fy - cy) * cy) + (fz - cz) * cz) / ks : 0.0;
   else

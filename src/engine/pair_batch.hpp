@@ -21,7 +21,10 @@
 // to the chunks that are not quiet.
 //
 // Used for the built-in slot combination (LinearNormal, CoulombTangential, NoBond or
-// ContactBond) with one particle material; anything else takes the scalar loop.
+// ContactBond) with one particle material, and for that combination with one mechanism of the
+// generic tier, the elastic-plastic rolling moment or viscous dashpots (engine/rolling_lanes.hpp,
+// engine/viscous_lanes.hpp; the generic law for the pairs that are not steady lanes); anything
+// else takes the scalar loop.
 #pragma once
 #include <cmath>
 #include <type_traits>
@@ -122,12 +125,37 @@ inline void fill_lanes(PairBatch& b, const ParticleArrays& p, const ContactHisto
   }
 }
 
+// What the lanes compute besides the paper's law: a mechanism of the generic tier computed lane
+// by lane (RollingLanes, engine/rolling_lanes.hpp; ViscousLanes, engine/viscous_lanes.hpp), or
+// nothing. A mechanism states kMoment (a moment on body 2 added to both torques: lane()),
+// kDashpots (the force replaced by the damped one: damp()), kNormal (the normal force in
+// place of the linear spring's: normal_force()) or kBondStrengths (each lane's bond strengths
+// in place of the contact bond's, and whether its bond forms now, which makes it fall back:
+// bond_strengths()), its invariant parameters `law`,
+// and how it fills its columns (fill), keeps a steady lane's state (keep) and books its
+// energy (book).
+struct NoLaneMechanism {
+  static constexpr bool kMoment = false;
+  static constexpr bool kDashpots = false;
+  static constexpr bool kNormal = false;
+  static constexpr bool kBondStrengths = false;
+  struct {
+  } law;
+  template <class Batch>
+  void fill(const Batch&, const ParticleArrays&) {}
+  void keep(std::size_t, int) {}
+  template <class Sink>
+  void book(Sink&, int) const {}
+};
+
 // The law for every lane (physics.md section 2, steps 1-6, for a contact that existed at the
 // start of the step), with the pair parameters q of the one particle material: the pair
-// geometry here, the law in lane_law.hpp. Each line is the scalar reference's expression;
-// see pair_force.hpp and contact_law.hpp for the physics.
-template <class Bond, bool kSlip>
-inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& q, double dt, double half_dt) {
+// geometry here, the law in lane_law.hpp, and the `mechanism`'s (NoLaneMechanism above). Each
+// line is the scalar reference's expression; see pair_force.hpp, contact_law.hpp and
+// generic_law.hpp for the physics.
+template <class Bond, bool kSlip, class Mechanism>
+inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& q, double dt, double half_dt,
+                          Mechanism& mechanism) {
   static_assert(std::is_same_v<Bond, NoBond> || std::is_same_v<Bond, ContactBond>,
                 "the lanes compute the contact bond's rule only (kHasBatchedKernel)");
   constexpr bool kBonds = std::is_same_v<Bond, ContactBond>;
@@ -138,6 +166,7 @@ inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& 
   }
   const double kn = q.kn, ks = q.ks, mu = q.friction;
   const int count = b.count;
+  [[maybe_unused]] const auto mechanism_law = mechanism.law;
 #pragma omp simd
   for (int l = 0; l < count; ++l) {
     // Geometry: normal n from 1 to 2, overlap un, contact point in the middle of the overlap.
@@ -163,49 +192,93 @@ inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& 
     // Twist about the previous normal: dt/2 (w1 + w2) . n_old (rad).
     const double hx = b.prev_normal[0][l], hy = b.prev_normal[1][l], hz = b.prev_normal[2][l];
     const double twist = half_dt * (((wix + wjx) * hx + (wiy + wjy) * hy) + (wiz + wjz) * hz);
-    const LaneForce r = lane_law<kBonds, kSlip>(LaneContact{nx, ny, nz, overlap, sx, sy, sz, twist, hx, hy, hz,
-                                                            b.fs[0][l], b.fs[1][l], b.fs[2][l], b.bonded[l] != 0.0},
-                                                kn, ks, mu, cn, cs);
+    const LaneContact contact{nx, ny, nz, overlap, sx, sy, sz, twist, hx, hy, hz,
+                              b.fs[0][l], b.fs[1][l], b.fs[2][l], b.bonded[l] != 0.0};
+    // Step 1's normal force: the linear spring Kn un, or the mechanism's normal law.
+    double fn = kn * overlap;
+    if constexpr (Mechanism::kNormal)
+      fn = mechanism.normal_force(l, mechanism_law, overlap, kn, kBonds ? b.bonded[l] : 0.0);
+    double lane_cn = cn, lane_cs = cs, bond_forms = 0.0;
+    if constexpr (Mechanism::kBondStrengths) {
+      const auto strengths = mechanism.bond_strengths(l, mechanism_law, fn);
+      lane_cn = strengths.normal;
+      lane_cs = strengths.shear;
+      bond_forms = strengths.forms;
+    }
+    LaneForce r = lane_law_of_force<kBonds, kSlip>(contact, fn, ks, mu, lane_cn, lane_cs);
     b.slip[l] = r.slip;
-    b.fallback[l] = r.falls_back ? 1.0 : 0.0;
-    // Torques arm x F of the force on body 2.
+    b.fallback[l] = r.falls_back ? 1.0 : bond_forms;
+    if constexpr (Mechanism::kDashpots) {
+      const auto d = mechanism.template damp<kSlip>(l, mechanism_law, nx, ny, nz, vn, sx, sy, sz, r.fn, r.trial_x,
+                                                    r.trial_y, r.trial_z, r.fsx, r.fsy, r.fsz,
+                                                    kBonds ? b.bonded[l] : 0.0, kn, ks, mu, dt);
+      r.Fx = d.Fx;
+      r.Fy = d.Fy;
+      r.Fz = d.Fz;
+    }
+    // Torques arm x F of the force on body 2, plus the moment on body 2 (body 1 gets the
+    // opposite of both).
     const double Fx = r.Fx, Fy = r.Fy, Fz = r.Fz;
-    b.torque_i[0][l] = aiy * Fz - aiz * Fy;
-    b.torque_i[1][l] = aiz * Fx - aix * Fz;
-    b.torque_i[2][l] = aix * Fy - aiy * Fx;
-    b.torque_j[0][l] = ajy * Fz - ajz * Fy;
-    b.torque_j[1][l] = ajz * Fx - ajx * Fz;
-    b.torque_j[2][l] = ajx * Fy - ajy * Fx;
+    double tix = aiy * Fz - aiz * Fy, tiy = aiz * Fx - aix * Fz, tiz = aix * Fy - aiy * Fx;
+    double tjx = ajy * Fz - ajz * Fy, tjy = ajz * Fx - ajx * Fz, tjz = ajx * Fy - ajy * Fx;
+    if constexpr (Mechanism::kMoment) {
+      // Relative rotation of the step (w2 - w1) dt (rad).
+      const auto m = mechanism.template lane<kSlip>(l, mechanism_law, nx, ny, nz, hx, hy, hz, twist, (wjx - wix) * dt,
+                                                        (wjy - wiy) * dt, (wjz - wiz) * dt, b.ri[l], b.rj[l], r.fn,
+                                                        ks);
+      tix = tix + m.mx;
+      tiy = tiy + m.my;
+      tiz = tiz + m.mz;
+      tjx = tjx + m.mx;
+      tjy = tjy + m.my;
+      tjz = tjz + m.mz;
+    }
+    b.torque_i[0][l] = tix;
+    b.torque_i[1][l] = tiy;
+    b.torque_i[2][l] = tiz;
+    b.torque_j[0][l] = tjx;
+    b.torque_j[1][l] = tjy;
+    b.torque_j[2][l] = tjz;
     store_lane_force(b, l, r, nx, ny, nz);
   }
 }
+// The paper's law alone in the lanes.
+template <class Bond, bool kSlip>
+inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& q, double dt, double half_dt) {
+  NoLaneMechanism none;
+  compute_lanes<Bond, kSlip>(b, bond, q, dt, half_dt, none);
+}
 
-// Particle pairs [begin, end) through the batched kernel. `out.carries(c, i, j, f, t_i, t_j)`
-// receives, in pair order, the force f on body 2 (body 1 gets -f) and the torques
-// t_i = arm_i x f (body 1 gets -t_i) and t_j = arm_j x f; `out.none(c)` each pair without
-// force (in a quiet chunk after the chunk's carrying pairs, so it must touch nothing that
-// carries() adds to). Requires one particle material (the caller checks).
-template <class Normal, class Tangential, class Bond, class Out, class Sink>
-[[gnu::always_inline]] inline void particle_pairs_batched(const Normal& normal_law, const Tangential& tangential_law,
-                                                          const Bond& bond_law, bool bond_new_contacts,
-                                                          const ParticleArrays& p, const PairTable& pairs, double dt,
-                                                          double half_dt, const Index* first, const Index* second,
-                                                          ContactHistory* history, std::size_t begin, std::size_t end,
-                                                          Out& out, Sink& sink) {
+// Particle pairs [begin, end) through the batched kernel, with the lanes' `mechanism`
+// (NoLaneMechanism, RollingLanes or ViscousLanes). `out.carries(c, i, j, f, t_i, t_j)`
+// receives, in pair order, the force f on body 2 (body 1 gets -f) and the torques t_i, t_j
+// (arm_i x f and arm_j x f plus the moment on body 2; body 1 gets -t_i); `out.none(c)` each
+// pair without force (in a quiet chunk after the chunk's carrying pairs, so it must touch
+// nothing that carries() adds to). A pair that is not a steady lane goes to
+// `scalar_pair(c, f, t_i, t_j)`, the scalar law from its untouched history, which returns
+// whether it carries force. Requires one particle material (the caller checks).
+template <class Bond, class Mechanism, class ScalarPair, class Out, class Sink>
+[[gnu::always_inline]] inline void particle_pairs_in_lanes(const Bond& bond_law, Mechanism& mechanism,
+                                                           ScalarPair&& scalar_pair, const ParticleArrays& p,
+                                                           const PairTable& pairs, double dt, double half_dt,
+                                                           const Index* first, const Index* second,
+                                                           ContactHistory* history, std::size_t begin,
+                                                           std::size_t end, Out& out, Sink& sink) {
   const PairParameters& q = pairs.particle_particle(0, 0);
   PairBatch b;
   const auto steady = [&](std::size_t k, int l) {  // steady contact: the lane's result
     keep_lane_history(history[k], b, l);
     sink.slip(b.slip[l]);
+    mechanism.keep(k, l);
+    mechanism.book(sink, l);
     out.carries(k, first[k], second[k], V3{b.f[0][l], b.f[1][l], b.f[2][l]},
                 V3{b.torque_i[0][l], b.torque_i[1][l], b.torque_i[2][l]},
                 V3{b.torque_j[0][l], b.torque_j[1][l], b.torque_j[2][l]});
   };
   const auto scalar = [&](std::size_t k) {  // a new contact if the spheres overlap now, or a change of state
-    V3 f, arm_i, arm_j;
-    if (particle_pair_force(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt, first[k],
-                            second[k], history[k], f, arm_i, arm_j, sink))
-      out.carries(k, first[k], second[k], f, cross(arm_i, f), cross(arm_j, f));
+    V3 f, t_i, t_j;
+    if (scalar_pair(k, f, t_i, t_j))
+      out.carries(k, first[k], second[k], f, t_i, t_j);
     else
       out.none(k);
   };
@@ -214,7 +287,8 @@ template <class Normal, class Tangential, class Bond, class Out, class Sink>
     const std::size_t chunk_begin = c;
     c = note_chunk(b, p.radius.data(), first, second, history, c, end);
     fill_lanes(b, p, history);
-    compute_lanes<Bond, Sink::kKeepsSlip>(b, bond_law, q, dt, half_dt);
+    mechanism.fill(b, p);
+    compute_lanes<Bond, Sink::kKeepsSlip>(b, bond_law, q, dt, half_dt, mechanism);
     if (!quiet_chunk(b, p)) {
       consume_in_pair_order(b, chunk_begin, c, steady, scalar);
       continue;
@@ -222,6 +296,29 @@ template <class Normal, class Tangential, class Bond, class Out, class Sink>
     for (int l = 0; l < b.count; ++l) steady(b.pair[l], l);
     for (int k = 0; k < b.apart; ++k) out.none(b.apart_pair[k]);
   }
+}
+
+// The paper's law (linear, Coulomb, `bond_law`) through the batched kernel; the scalar
+// reference (particle_pair_force) for the pairs that are not steady lanes.
+template <class Normal, class Tangential, class Bond, class Out, class Sink>
+[[gnu::always_inline]] inline void particle_pairs_batched(const Normal& normal_law, const Tangential& tangential_law,
+                                                          const Bond& bond_law, bool bond_new_contacts,
+                                                          const ParticleArrays& p, const PairTable& pairs, double dt,
+                                                          double half_dt, const Index* first, const Index* second,
+                                                          ContactHistory* history, std::size_t begin, std::size_t end,
+                                                          Out& out, Sink& sink) {
+  NoLaneMechanism none;
+  const auto scalar_pair = [&](std::size_t k, V3& f, V3& t_i, V3& t_j) {
+    V3 arm_i, arm_j;
+    if (!particle_pair_force(normal_law, tangential_law, bond_law, bond_new_contacts, p, pairs, dt, half_dt,
+                             first[k], second[k], history[k], f, arm_i, arm_j, sink))
+      return false;
+    t_i = cross(arm_i, f);
+    t_j = cross(arm_j, f);
+    return true;
+  };
+  particle_pairs_in_lanes(bond_law, none, scalar_pair, p, pairs, dt, half_dt, first, second, history, begin, end,
+                          out, sink);
 }
 
 }  // namespace colza::detail

@@ -20,6 +20,10 @@
 #include "engine/pair_batch.hpp"
 #include "engine/pair_force.hpp"
 #include "engine/pair_sinks.hpp"
+#include "engine/rolling_lanes.hpp"
+#include "engine/viscous_lanes.hpp"
+#include "engine/walton_braun_lanes.hpp"
+#include "engine/load_induced_lanes.hpp"
 #include "engine/wall_batch.hpp"
 #include "engine/wall_pair_force.hpp"
 
@@ -40,6 +44,12 @@ using detail::particle_pair_force;
 using detail::V3;
 using detail::kHasBatchedKernel;
 using detail::particle_pairs_batched;
+using detail::particle_pairs_in_lanes;
+using detail::PairBatch;
+using detail::RollingLanes;
+using detail::ViscousLanes;
+using detail::WaltonBraunLanes;
+using detail::LoadInducedLanes;
 using detail::wall_pair_force;
 using detail::wall_pairs_batched;
 using detail::ForceLoopTotals;
@@ -77,6 +87,66 @@ struct GenericLaw {
   const SlotStateLayout& layout;
   bool bond_new_contacts;
 };
+// MechanismLaw: the baseline's slots with one mechanism the lanes compute (`Mechanism`: the
+// elastic-plastic rolling moment, viscous dashpots, the Walton-Braun normal law or load-induced
+// cohesion; with_lane_mechanism): particle pairs in the batched kernels with the mechanism's
+// lanes (engine/rolling_lanes.hpp, viscous_lanes.hpp, walton_braun_lanes.hpp,
+// load_induced_lanes.hpp), compiled for `Bond` and the mechanism; the generic law for the
+// pairs that are not steady lanes, for wall pairs, for several particle materials and for
+// dt = 0 (where the generic law leaves out the tangential dashpot). Same
+// bits as the generic law (ForcePaths.TheMechanismLanesGiveTheGenericTierBits).
+template <class Bond, class Mechanism>
+struct MechanismLaw {
+  const Bond& bond;
+  const Mechanism& mechanism;
+  GenericLaw generic;
+};
+template <class Law>
+inline constexpr bool kIsMechanismLaw = false;
+template <class Bond, class Mechanism>
+inline constexpr bool kIsMechanismLaw<MechanismLaw<Bond, Mechanism>> = true;
+
+// The lanes of a mechanism over the pairs' slot-state rows `state`.
+inline RollingLanes<PairBatch::kLanes> lanes_of(const ElasticPlasticRolling& rolling, double* state,
+                                                const SlotStateLayout& layout) {
+  return RollingLanes<PairBatch::kLanes>(rolling, state, layout.stride, layout.rolling);
+}
+inline ViscousLanes<PairBatch::kLanes> lanes_of(const ViscousDamping& viscous, double*, const SlotStateLayout&) {
+  return ViscousLanes<PairBatch::kLanes>(viscous);
+}
+inline WaltonBraunLanes<PairBatch::kLanes> lanes_of(const WaltonBraunNormal& normal, double* state,
+                                                    const SlotStateLayout& layout) {
+  return WaltonBraunLanes<PairBatch::kLanes>(normal, state, layout.stride, layout.normal);
+}
+inline LoadInducedLanes<PairBatch::kLanes> lanes_of(const LoadInducedBond& bond, double* state,
+                                                    const SlotStateLayout& layout) {
+  return LoadInducedLanes<PairBatch::kLanes>(bond, state, layout.stride, layout.bond);
+}
+// Load-induced cohesion runs the lanes' contact-bond rule with each lane's strengths
+// (LoadInducedLanes): this bond's own strengths are never read.
+constexpr ContactBond kStrengthsPerLane{};
+
+// Calls f(mechanism) when the model is the baseline's slots (linear, Coulomb, no damping, no
+// rolling, no bond or the contact bond) with exactly one of them changed to a mechanism the
+// lanes compute: the elastic-plastic rolling moment, viscous damping, the Walton-Braun
+// normal law or load-induced cohesion. Returns whether it did.
+template <class F>
+bool with_lane_mechanism(const ContactModel& m, F&& f) {
+  if (!std::holds_alternative<CoulombTangential>(m.tangential)) return false;
+  const auto* rolling = std::get_if<ElasticPlasticRolling>(&m.rolling);
+  const auto* viscous = std::get_if<ViscousDamping>(&m.damping);
+  const auto* walton_braun = std::get_if<WaltonBraunNormal>(&m.normal);
+  const auto* load_induced = std::get_if<LoadInducedBond>(&m.bond);
+  const bool linear = std::holds_alternative<LinearNormal>(m.normal);
+  const int mechanisms =
+      (rolling != nullptr) + (viscous != nullptr) + (walton_braun != nullptr) + (load_induced != nullptr);
+  if (mechanisms != 1 || !(linear || walton_braun)) return false;
+  if (rolling) f(*rolling);
+  else if (viscous) f(*viscous);
+  else if (walton_braun) f(*walton_braun);
+  else f(*load_induced);
+  return true;
+}
 
 // Particle pairs [begin, end) in pair order: the batched kernel for the baseline with one
 // particle material, the scalar reference otherwise (same results, see pair_batch.hpp); the
@@ -89,7 +159,23 @@ template <class Law, class Out, class Sink>
   const Index* first = pp.first.data();
   const Index* second = pp.second.data();
   ContactHistory* history = pp.history.data();
-  if constexpr (std::is_same_v<Law, GenericLaw>) {
+  if constexpr (kIsMechanismLaw<Law>) {
+    if (pairs.particle_material_count() != 1 || !(dt > 0.0)) {
+      particle_pair_range(law.generic, p, pairs, dt, pp, begin, end, out, sink);
+      return;
+    }
+    const GenericLaw& generic = law.generic;
+    const std::size_t stride = generic.layout.stride;
+    double* state = pp.slot_state.data();
+    auto mechanism = lanes_of(law.mechanism, state, generic.layout);
+    const auto scalar_pair = [&](std::size_t k, V3& f, V3& t_i, V3& t_j) {
+      return generic_particle_pair_force(generic.model, generic.layout, generic.bond_new_contacts, p, pairs, dt,
+                                         half_dt, first[k], second[k], history[k], state + k * stride, f, t_i, t_j,
+                                         sink);
+    };
+    particle_pairs_in_lanes(law.bond, mechanism, scalar_pair, p, pairs, dt, half_dt, first, second, history, begin,
+                            end, out, sink);
+  } else if constexpr (std::is_same_v<Law, GenericLaw>) {
     const std::size_t stride = law.layout.stride;
     double* state = pp.slot_state.data();
     for (std::size_t c = begin; c < end; ++c) {
@@ -130,7 +216,9 @@ template <class Law, class Out, class Sink>
   const double half_dt = 0.5 * dt;
   const Index* particle = pw.particle.data();
   ContactHistory* history = pw.history.data();
-  if constexpr (std::is_same_v<Law, GenericLaw>) {
+  if constexpr (kIsMechanismLaw<Law>) {
+    wall_pair_range(law.generic, p, wall, pairs, dt, pw, begin, end, out, sink);
+  } else if constexpr (std::is_same_v<Law, GenericLaw>) {
     const std::size_t stride = law.layout.stride;
     double* state = pw.slot_state.data();
     for (std::size_t c = begin; c < end; ++c) {
@@ -332,7 +420,22 @@ void Stepper::compute_forces(World& world) {
           },
           physics_.model.bond);
     } else {
-      run(GenericLaw{physics_.model, world.contacts.slot_state_layout(), bond_new});
+      const GenericLaw generic{physics_.model, world.contacts.slot_state_layout(), bond_new};
+      const auto in_lanes = [&](const auto& mechanism) {
+        using Mechanism = std::decay_t<decltype(mechanism)>;
+        if constexpr (std::is_same_v<Mechanism, LoadInducedBond>) {
+          run(MechanismLaw<ContactBond, Mechanism>{kStrengthsPerLane, mechanism, generic});
+        } else {
+          std::visit(
+              [&](const auto& bond) {
+                using Bond = std::decay_t<decltype(bond)>;
+                if constexpr (kHasBatchedKernel<LinearNormal, CoulombTangential, Bond>)
+                  run(MechanismLaw<Bond, Mechanism>{bond, mechanism, generic});
+              },
+              physics_.model.bond);
+        }
+      };
+      if (physics_.generic_tier_only || !with_lane_mechanism(physics_.model, in_lanes)) run(generic);
     }
   };
   if (sums_.damping_work)

@@ -14,6 +14,7 @@
 
 #include <cstring>
 #include <map>
+#include <string>
 #include <utility>
 
 #ifdef _OPENMP
@@ -42,6 +43,11 @@ struct Setup {
   int rebuild_every = 0;      // > 0: also rebuild the candidate lists every this many steps
   bool generic_tier = false;  // run the generic law even for the baseline (contact/generic_law.hpp)
   bool mechanisms = false;    // rolling resistance, viscous dashpots and the elasto-plastic normal law on
+  bool rolling = false;       // rolling resistance alone on the paper's law (its lanes in the batched kernel)
+  RollingForm rolling_form = RollingForm::kYade;
+  bool viscous = false;       // viscous dashpots alone on the paper's law (their lanes in the batched kernel)
+  bool walton_braun = false;  // the Walton-Braun normal law alone in place of the linear spring (its lanes)
+  bool load_induced = false;  // load-induced cohesion alone (its lanes): bonds forming under load and breaking
 };
 
 World make_world(const Setup& setup) {
@@ -105,6 +111,10 @@ PhysicsSettings physics(const Setup& setup) {
     s.model.damping = ViscousDamping{0.2, 0.1};
     s.model.rolling = ElasticPlasticRolling{1.0, 0.1, RollingForm::kYade, true};
   }
+  if (setup.rolling) s.model.rolling = ElasticPlasticRolling{1.0, 0.05, setup.rolling_form, true};
+  if (setup.viscous) s.model.damping = ViscousDamping{0.3, 0.2};
+  if (setup.walton_braun) s.model.normal = WaltonBraunNormal{2.0};
+  if (setup.load_induced) s.model.bond = LoadInducedBond{0.02, 1.0, 1.5, 0.08, 0.1};
   s.integrator.damping = 0.3;
   s.integrator.gravity = Vec3(0.0, 0.0, -9.81);
   s.time_step.automatic = false;
@@ -419,6 +429,65 @@ TEST(ForcePaths, TheGenericTierWithMechanismsGivesTheOneThreadBitsOnThreads) {
   expect_same_pair_energies(one.ledger, two.ledger);
   EXPECT_EQ(std::memcmp(&one.ledger.rolling_dissipated, &three.ledger.rolling_dissipated, sizeof(double)), 0);
   EXPECT_EQ(std::memcmp(&one.ledger.viscous_dissipated, &three.ledger.viscous_dissipated, sizeof(double)), 0);
+}
+
+// Rolling resistance, viscous damping or the Walton-Braun normal law on the paper's law runs
+// its particle pairs in the batched kernel with the mechanism's lanes
+// (engine/rolling_lanes.hpp, viscous_lanes.hpp, walton_braun_lanes.hpp): the generic tier's
+// bits, both forms of the rolling spring, bonds breaking, the caps and the loading
+// dissipating, with a wide skin (candidates apart) and on two threads.
+TEST(ForcePaths, TheMechanismLanesGiveTheGenericTierBits) {
+  struct Mechanism {
+    const char* name;
+    bool rolling, viscous, walton_braun, load_induced;
+    RollingForm form;
+  };
+  for (const Mechanism m : {Mechanism{"rolling, YADE's form", true, false, false, false, RollingForm::kYade},
+                            Mechanism{"rolling, PFC's form", true, false, false, false, RollingForm::kPfc},
+                            Mechanism{"viscous", false, true, false, false, RollingForm::kYade},
+                            Mechanism{"Walton-Braun", false, false, true, false, RollingForm::kYade},
+                            Mechanism{"load-induced", false, false, false, true, RollingForm::kYade}}) {
+    for (const bool bonds : {false, true}) {
+      if (bonds && m.load_induced) continue;  // its own bonds
+      SCOPED_TRACE(std::string(m.name) + (bonds ? ", bonds" : ", no bonds"));
+      const ::Setup lanes_setup{
+          .bonds = bonds, .rolling = m.rolling, .rolling_form = m.form, .viscous = m.viscous,
+                   .walton_braun = m.walton_braun, .load_induced = m.load_induced};
+      ::Setup generic_setup = lanes_setup;
+      generic_setup.generic_tier = true;
+      const PathRun generic = run_path(generic_setup, 1);
+      const PathRun lanes = run_path(lanes_setup, 1);
+      if (m.rolling) EXPECT_GT(generic.ledger.rolling_dissipated, 0.0);
+      if (m.viscous) EXPECT_GT(generic.ledger.viscous_dissipated, 0.0);
+      if (m.walton_braun) EXPECT_GT(generic.ledger.plastic_dissipated, 0.0);
+      if (bonds || m.load_induced) EXPECT_GT(generic.broken_tension + generic.broken_shear, 0u);
+      EXPECT_EQ(generic.broken_tension, lanes.broken_tension);
+      EXPECT_EQ(generic.broken_shear, lanes.broken_shear);
+      expect_same_state(generic.world, lanes.world);
+      expect_same_pair_energies(generic.ledger, lanes.ledger);
+      EXPECT_EQ(std::memcmp(&generic.ledger.rolling_dissipated, &lanes.ledger.rolling_dissipated, sizeof(double)), 0);
+      EXPECT_EQ(std::memcmp(&generic.ledger.viscous_dissipated, &lanes.ledger.viscous_dissipated, sizeof(double)), 0);
+      EXPECT_EQ(std::memcmp(&generic.ledger.plastic_dissipated, &lanes.ledger.plastic_dissipated, sizeof(double)), 0);
+    }
+    SCOPED_TRACE(std::string(m.name) + ", wide skin and two threads");
+    const ::Setup wide{.skin = 2.5e-3, .rolling = m.rolling, .rolling_form = m.form, .viscous = m.viscous,
+                   .walton_braun = m.walton_braun, .load_induced = m.load_induced};
+    ::Setup wide_generic = wide;
+    wide_generic.generic_tier = true;
+    expect_same_state(run_path(wide_generic, 1).world, run_path(wide, 1).world);
+    const ::Setup bonded{.bonds = true, .rolling = m.rolling, .rolling_form = m.form, .viscous = m.viscous,
+                   .walton_braun = m.walton_braun, .load_induced = m.load_induced};
+    ::Setup bonded_generic = bonded;
+    bonded_generic.generic_tier = true;
+    const PathRun two = run_path(bonded, 2);
+    const PathRun one = run_path(bonded_generic, 1);
+    EXPECT_EQ(two.threaded_steps, 300u);
+    expect_same_state(one.world, two.world);
+    expect_same_pair_energies(one.ledger, two.ledger);
+    EXPECT_EQ(std::memcmp(&one.ledger.rolling_dissipated, &two.ledger.rolling_dissipated, sizeof(double)), 0);
+    EXPECT_EQ(std::memcmp(&one.ledger.viscous_dissipated, &two.ledger.viscous_dissipated, sizeof(double)), 0);
+    EXPECT_EQ(std::memcmp(&one.ledger.plastic_dissipated, &two.ledger.plastic_dissipated, sizeof(double)), 0);
+  }
 }
 
 // Three ranges: a middle range has boundary particles and outgoing pairs at once.
