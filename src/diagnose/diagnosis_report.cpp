@@ -30,8 +30,12 @@ nlohmann::json fit_json(const DiagnosisProblem& p, const Fit& f, const std::vect
                                     {"scatter_sd", f.noise.scatter_sd[k]},
                                     {"z", f.adequacy.z[k]}};
   }
+  nlohmann::json held = nlohmann::json::array();
+  for (bool b : f.held_at_bound) held.push_back(b);
   return {{"model", f.model},
           {"parameters", parameters},
+          {"refit_shift", vec(f.refit_shift)},
+          {"refit_held_at_bound", held},
           {"features", features},
           {"chi_square", f.adequacy.chi_square},
           {"degrees_of_freedom", f.adequacy.degrees_of_freedom},
@@ -122,12 +126,25 @@ std::string diagnosis_report(const DiagnosisProblem& p, const DiagnosisResult& d
   o << "The baseline calibrated to every feature, then run in " << d.baseline.noise.realisations
     << " realisations (other seeds) at the fit. Noise = measurement uncertainty and realisation scatter "
        "(src/diagnose/noise_model.hpp); z = (measured - model) / noise.\n\n";
-  o << "| feature | test | measured | model | noise sd | z |\n|---|---|---|---|---|---|\n";
+  // The model at the fit, and after the linearised refit (the residual z is judged on).
+  const bool refit = d.baseline.refit_shift.size() == d.baseline_sensitivity.cols();
+  const Eigen::VectorXd refitted =
+      refit ? Eigen::VectorXd(d.baseline.mean_features + d.baseline_sensitivity * d.baseline.refit_shift)
+            : d.baseline.mean_features;
+  o << "| feature | test | measured | model at the fit | after the refit | noise sd | z |\n|---|---|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < p.features.size(); ++i) {
     const auto k = static_cast<Eigen::Index>(i);
     o << "| " << p.features[i].name << " (" << p.features[i].unit << ") | " << p.features[i].test << " | "
-      << fmt(p.features[i].measured) << " | " << fmt(d.baseline.mean_features[k]) << " | "
+      << fmt(p.features[i].measured) << " | " << fmt(d.baseline.mean_features[k]) << " | " << fmt(refitted[k]) << " | "
       << fmt(d.baseline.noise.sd[k]) << " | " << fmt(d.baseline.adequacy.z[k]) << " |\n";
+  }
+  if (refit) {
+    o << "\nLinearised refit from the fit (shift within the ranges):";
+    for (std::size_t j = 0; j < p.parameters.size(); ++j)
+      o << " " << p.parameters[j].name << " " << (d.baseline.refit_shift[static_cast<Eigen::Index>(j)] >= 0 ? "+" : "")
+        << fmt(d.baseline.refit_shift[static_cast<Eigen::Index>(j)])
+        << (d.baseline.held_at_bound[j] ? " (held at its bound)" : "") << ";";
+    o << "\n";
   }
   o << "\nAdequacy: chi2 = " << fmt(d.baseline.adequacy.chi_square) << " on " << d.baseline.adequacy.degrees_of_freedom
     << " degrees of freedom, p = " << fmt(d.baseline.adequacy.p_value) << " (alpha = " << fmt(p.settings.significance)
@@ -139,7 +156,7 @@ std::string diagnosis_report(const DiagnosisProblem& p, const DiagnosisResult& d
   if (!d.signatures.empty()) {
     o << "## 2. Candidates\n\nEach candidate's signature (d feature / d parameter from its neutral value, common random "
          "numbers), the part the baseline's own parameters cannot absorb, and the one-sided score test against the "
-         "residual (Holm-adjusted over " << p.candidates.size() << " candidates).\n\n";
+         "residual (adjusted by max-T over " << p.candidates.size() << " candidates, their null correlations the projected signatures' cosines).\n\n";
     o << "| candidate | z | p (adjusted) | absorbed by the baseline | alignment with residual | linear estimate | reach (noise units) |\n|---|---|---|---|---|---|---|\n";
     for (std::size_t k = 0; k < p.candidates.size(); ++k) {
       const CandidateScore& s = d.scores.scores[k];

@@ -96,9 +96,15 @@ Verdict decide(const DiagnosisProblem& p, const Fit& baseline, double baseline_b
         why += " " + n + " does not improve the fit significantly (likelihood ratio p = " + fmt(e.likelihood_ratio_p) +
                ");";
     }
-    v.text = "Unexplained: the baseline misses the data (" + adequacy_text + ");" + why +
-             " The remaining residual is largest in " +
-             residual_pattern(p, extended.empty() ? baseline : extended.front().fit) + ".";
+    // The residual left by the best extended model that was tested, else the baseline's.
+    const Fit* left = &baseline;
+    for (const auto& e : extended)
+      if (e.fit.adequacy.degrees_of_freedom > 0 && (left == &baseline || e.fit.adequacy.chi_square < left->adequacy.chi_square))
+        left = &e.fit;
+    if (!why.empty() && why.back() == ';') why.back() = '.';
+    v.text = "Unexplained: the baseline misses the data (" + adequacy_text + ");" + why + " The " +
+             (left == &baseline ? "baseline's" : left->model + " model's") + " residual is largest in " +
+             residual_pattern(p, *left) + ".";
     return v;
   }
   const ExtendedFit& best = *ok.front();
