@@ -5,6 +5,8 @@
 
 #include "config/config_error.hpp"
 #include "config/config_reader.hpp"
+#include "calibration/lab_tests.hpp"
+#include "calibration/run_features.hpp"
 #include "io/format_number.hpp"
 #include "io/input_file.hpp"
 
@@ -55,6 +57,49 @@ void require_model_accepts(const ConfigNode& n, const std::string& key, const Di
 
 std::string assignment(const std::string& key, double value) { return key + "=" + format_significant(value, 17); }
 
+// The features of a test's measured curves, when it names any: an oedometer's load-unload
+// curve (`curve`, with the sample's `sample_height` in m) or a shear series' curves, one per
+// load (`[[tests.curves]]` with `normal_stress` in Pa and `file`), in the formats of
+// data/measured/README.md, reduced by the code that reduces colza's own runs
+// (calibration/lab_tests.hpp) and named as a run's features are.
+calibration::Features measured_curve_features(const ConfigNode& t, const std::string& spec_file,
+                                              const DiagnosisTest& test) {
+  calibration::Features out;
+  const std::vector<ConfigNode> per_load = t.table_array("curves");
+  if (!t.has("curve") && per_load.empty()) return out;
+  RunConfig model;
+  try {
+    model = load_run_config(test.scenario, test.config, test.set);
+  } catch (const ConfigError& e) {
+    t.fail("config", "test " + test.name + "'s model (its measured curves are read in its geometry): " + e.what());
+  }
+  if (t.has("curve")) {
+    if (test.scenario != Scenario::kOedometer)
+      t.fail("curve", "a load-unload curve belongs to an oedometer test (a shear test names [[tests.curves]], one "
+                      "per load)");
+    t.require("sample_height", "the measured sample's height at zero piston travel, m");
+    const calibration::MeasuredCurveContext c{&model, t.positive("sample_height", 0.0), spec_file, t.full("curve")};
+    const std::string csv = resolve(spec_file, required_string(t, "curve", "a measured load-unload curve (CSV)"));
+    out = calibration::lab_test("load_unload").read_curve_features(csv, c);
+  }
+  for (const ConfigNode& load : per_load) {
+    if (test.scenario != Scenario::kShear) load.fail("file", "shear curves per load belong to a shear test");
+    load.require("normal_stress", "the load's normal stress, Pa");
+    const double sigma = load.positive("normal_stress", 0.0);
+    const calibration::MeasuredCurveContext c{&model, 0.0, spec_file, load.full("file")};
+    const std::string csv = resolve(spec_file, required_string(load, "file", "a measured shear curve (CSV)"));
+    for (const auto& [name, value] : calibration::lab_test("shear_curve").read_curve_features(csv, c))
+      out[calibration::load_feature_name(sigma, name)] = value;
+  }
+  return out;
+}
+
+std::string names_of(const calibration::Features& f) {
+  std::string s;
+  for (const auto& [name, value] : f) s += (s.empty() ? "" : ", ") + name;
+  return s;
+}
+
 DiagnosisTest read_test(const ConfigNode& t, const std::string& spec_file, std::set<std::string>& names) {
   DiagnosisTest test;
   test.name = required_string(t, "name", "the test's name, e.g. \"oedometer\"");
@@ -68,14 +113,19 @@ DiagnosisTest read_test(const ConfigNode& t, const std::string& spec_file, std::
     t.fail("config", "the model config " + why);
   test.set = string_list(t, "set");
   const int samples = static_cast<int>(t.integer("samples", 1, 1));  // lab samples each measured value is the mean of
+  const calibration::Features from_curves = measured_curve_features(t, spec_file, test);
   std::set<std::string> feature_names;
   for (const ConfigNode& f : t.table_array("features")) {
     Feature feature;
     feature.name = required_string(f, "name", "a feature a run of this test yields, e.g. \"bulk_density\"");
     if (!feature_names.insert(feature.name).second) f.fail("name", "repeats another feature of this test");
-    f.require("value", "the measured value, SI units");
+    const auto from_curve = from_curves.find(feature.name);
+    if (from_curve == from_curves.end())
+      f.require("value", from_curves.empty() ? "the measured value, SI units"
+                                              : "the measured value, SI units: the test's measured curves give no " +
+                                                    feature.name + "; they give " + names_of(from_curves));
     f.require("uncertainty", "the measured value's standard uncertainty, SI units");
-    feature.measured = f.number("value", 0.0);
+    feature.measured = f.has("value") ? f.number("value", 0.0) : from_curve->second;
     feature.uncertainty = f.positive("uncertainty", 0.0);
     feature.unit = f.string("unit", "");
     feature.test = test.name;
