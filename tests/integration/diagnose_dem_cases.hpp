@@ -54,7 +54,7 @@ inline std::string small_spec(int replicates, const std::function<double(std::si
   const std::string data = std::string(COLZA_SOURCE_DIR) + "/tests/data/";
   std::ostringstream s;
   s << "title = \"small samples\"\n"
-    << "[settings]\nreplicates = " << replicates << "\nsignature_seeds = 3\ncalibration_runs = 8\nextend_at_most = 2\n"
+    << "[settings]\nreplicates = " << replicates << "\nsignature_seeds = 3\ncalibration_runs = 12\nextend_at_most = 2\n"
     << "[[parameters]]\nname = \"mu_pp\"\nkey = \"particle.friction\"\nlower = 0.1\nupper = 0.5\n"
     << "[[candidates]]\nname = \"rolling_resistance\"\n"
     << "[[candidates]]\nname = \"elasto_plastic\"\n"
