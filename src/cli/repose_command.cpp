@@ -87,7 +87,7 @@ void run_repose_scenario(const RunConfig& c, const RunOptions& opt, OutputStagin
   write_csv(out.path("heap_profile.csv"), profile);
   write_packing(out.path("packing.txt"), r.column);
   write_packing(out.path("heap.txt"), r.final_state);
-  write_result_h5(out.path("result.h5"), "repose", c, s, "heap_profile", profile,
+  write_result_h5(out, "repose", c, s, "heap_profile", profile,
                   {{"particles/column", &r.column}, {"particles/final", &r.final_state}});
   write_json(out.path("summary.json"), s);
 

@@ -122,6 +122,15 @@ struct SceneSpec {                    // [scene]
   std::vector<std::int64_t> record_particles;  // indices; empty = none
 };
 
+// [output]: what a `colza run` writes beside its results. Not part of the physics: a key
+// left out is not written into the resolved config (RunConfig::resolved_toml), so the
+// run's fingerprint (calibration run reuse) is that of its physics alone.
+struct OutputSpec {
+  // Simulated seconds between particle snapshots in result.h5 (and result.xmf), counted from
+  // the start of the test (the oedometer's loading, the shear box's consolidation of each
+  // load, the scene's first step); 0 = none. Default per scenario: kDefaultSnapshotInterval.
+  double snapshot_interval = 0.0;
+};
 struct RunConfig {
   std::string source;                 // file name (or built-in defaults)
   std::vector<std::string> overrides; // --set key=value (and --seed as seed=N), in order
@@ -145,10 +154,16 @@ struct RunConfig {
   ShearBoxSpec shear_box;
   ReposeSpec repose;
   SceneSpec scene;
+  OutputSpec output;
 };
 
 enum class Scenario { kOedometer, kShear, kScene, kRepose };
 const char* to_string(Scenario s);
+
+// Defaults of output.snapshot_interval (s): a few dozen snapshots of the paper's tests (the
+// oedometer loads for ~1-2 s, the shear box consolidates and shears for ~6-7 s); none for a
+// scene or the angle of repose (set it to have them).
+double default_snapshot_interval(Scenario s);
 
 // Reads and validates everything the scenario needs, then rejects unknown keys.
 // `config_path` empty = built-in defaults. Throws ConfigError.

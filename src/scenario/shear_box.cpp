@@ -12,6 +12,7 @@
 #include "scenario/bonds.hpp"
 #include "scenario/generation.hpp"
 #include "scenario/sample_preparation.hpp"
+#include "scenario/snapshot_recorder.hpp"
 #include "scenario/plate_servo.hpp"
 
 namespace colza {
@@ -144,7 +145,7 @@ std::size_t count_outside(const World& w, const ShearBoxSpec& b, double offset, 
 }  // namespace
 
 ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, double normal_stress,
-                               Progress& progress) {
+                               Progress& progress, double snapshot_interval) {
   ShearLoadResult r;
   const ShearBoxSpec& b = c.shear_box;
   const double area = b.length * b.width;  // nominal area (paper: 0.04 m^2)
@@ -177,6 +178,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
   StageClock consolidation_clock("consolidation");
   progress.start_stage("consolidation");
   const double t0 = world.time;
+  SnapshotRecorder snapshots(snapshot_interval, t0);
   double held_since = -1.0;
   std::uint64_t steps = 0;
   while (true) {
@@ -195,6 +197,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
     }
     stepper.finish_step(world);
     ++steps;
+    snapshots.observe(world);
     if (held_since >= 0.0 && world.time - held_since >= b.consolidation_window) {
       r.consolidated = true;
       break;
@@ -247,8 +250,11 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
     }
     stepper.finish_step(world);
     ++shear_steps;
+    snapshots.observe(world);
   }
   stepper.require_sound_state(world);  // a blow-up within the last check interval, too
+  snapshots.record(world);
+  r.snapshots = snapshots.take();
   progress.end_stage();
   shear_clock.count_steps(shear_steps, world.particles.size());
   r.stages.push_back(shear_clock.finish());
