@@ -1,6 +1,7 @@
 #include "cli/run_commands.hpp"
 
 #include "cli/command_common.hpp"
+#include "cli/plot_command.hpp"
 #include "cli/repose_command.hpp"
 #include "cli/shear_commands.hpp"
 
@@ -210,7 +211,11 @@ int run_command(const RunOptions& opt) {
   for (const std::string& w : settings_warnings(config, scenario, series, stresses))
     std::fprintf(stderr, "colza: warning: %s\n", w.c_str());
   try {
-    if (series) return run_shear_series(config, opt);
+    if (series) {
+      const int code = run_shear_series(config, opt);
+      if (code == 0 && config.output.plots) plot_after_run(opt.out_dir, opt.quiet);
+      return code;
+    }
     OutputStaging out(opt.out_dir, opt.force);
     if (scenario == Scenario::kOedometer) run_oedometer_scenario(config, opt, out);
     else if (scenario == Scenario::kShear) run_shear_scenario(config, opt, out);
@@ -218,6 +223,7 @@ int run_command(const RunOptions& opt) {
     else run_scene_scenario(config, opt, out);
     // --force: the earlier result's files that this run does not write go too.
     out.commit(opt.force ? earlier_run_outputs(opt.out_dir) : std::vector<std::string>{});
+    if (config.output.plots) plot_after_run(opt.out_dir, opt.quiet);
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "colza: error: %s\n", e.what());
     return 2;

@@ -331,6 +331,7 @@ OutputSpec read_output(const ConfigNode& t, Scenario scenario) {
   OutputSpec o;
   o.snapshot_interval = t.has("snapshot_interval") ? t.non_negative("snapshot_interval", 0.0)
                                                    : default_snapshot_interval(scenario);
+  if (t.has("plots")) o.plots = t.boolean("plots", true);
   return o;
 }
 

@@ -130,6 +130,8 @@ struct OutputSpec {
   // the start of the test (the oedometer's loading, the shear box's consolidation of each
   // load, the scene's first step); 0 = none. Default per scenario: kDefaultSnapshotInterval.
   double snapshot_interval = 0.0;
+  // output.plots: draw the result's plots into DIR/plots/ after the run (cli/plot_command.hpp).
+  bool plots = true;
 };
 struct RunConfig {
   std::string source;                 // file name (or built-in defaults)
