@@ -53,10 +53,13 @@ def plot_target(summary, i, out_dir):
             ax.plot(run["parameters"][j], run["targets"][i], marker, color=colour, ms=8 if marker == "*" else 6,
                     label=None if role in seen else f"{role} run")
             seen.add(role)
-        ax.axvline(par["value"], color="tab:red", lw=0.8, ls="--")
+        # The solution, at the value the validation achieved, with the parameter's standard
+        # uncertainty as a horizontal bar (it may reach beyond the design range).
         sd = par.get("uncertainty")
-        if common.finite(sd):
-            ax.axvspan(par["value"] - sd, par["value"] + sd, color="tab:red", alpha=0.08)
+        ax.axvline(par["value"], color="tab:red", lw=0.8, ls="--")
+        ax.errorbar([par["value"]], [target["achieved"]], xerr=[sd] if common.finite(sd) else None, fmt="none",
+                    ecolor="tab:red", elinewidth=1.0, capsize=4,
+                    label=f"solution {par['value']:.4g}" + (f" +/- {sd:.2g}" if common.finite(sd) else ""))
         unit = f" ({par['unit']})" if par.get("unit") else ""
         ax.set_xlabel(f"{par['name']}{unit}")
         ax.set_xlim(lo - 0.05 * (hi - lo), hi + 0.05 * (hi - lo))
