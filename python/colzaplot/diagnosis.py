@@ -1,8 +1,9 @@
 """A diagnosis (colza diagnose, src/diagnose/diagnosis_report.cpp's summary.json): the
 measured features against the model's before (the calibrated baseline) and after (the
 extended fit of the verdict's cause, else of the best candidate by BIC), each as the
-deviation from the measurement in units of the baseline's noise sd, with the 1 and 2 sd
-bands; and the candidates' signature similarity (cosine) matrix."""
+diagnosis's own z of the feature (measured - model over its total sd: the model's noise and
+the measurement's uncertainty), with the 1 and 2 sd bands; and the candidates' signature
+similarity (cosine) matrix."""
 import os
 
 import numpy as np
@@ -27,27 +28,27 @@ def _after_fit(summary):
 
 def plot_features(summary, out_dir):
     measured = summary["measured"]
-    base = summary["baseline"]["features"]
+    base = summary["baseline"]
     after, after_name = _after_fit(summary)
     names = [m["feature"] for m in measured]
-    sd = np.array([base[n]["noise_sd"] for n in names])
-    value = np.array([m["value"] for m in measured])
-    unc = np.array([m["uncertainty"] for m in measured])
     x = np.arange(len(names))
     fig, ax = common.figure()
-    ax.axhspan(-2, 2, color="tab:green", alpha=0.08, label="2 noise sd")
-    ax.axhspan(-1, 1, color="tab:green", alpha=0.16, label="1 noise sd")
-    ax.errorbar(x, np.zeros_like(x, dtype=float), yerr=unc / sd, fmt="s", color="k", ms=5, capsize=3,
-                label="measured (+/- its uncertainty)")
-    before = np.array([base[n]["model"] for n in names])
-    ax.plot(x - 0.12, (before - value) / sd, "o", color="tab:red", ms=7, label="model before (baseline)")
+    ax.axhspan(-2, 2, color="tab:green", alpha=0.08, label="2 sd")
+    ax.axhspan(-1, 1, color="tab:green", alpha=0.16, label="1 sd")
+    ax.axhline(0.0, color="k", lw=1.0, label="measured")
+    ax.plot(x - 0.1, [base["features"][n]["z"] for n in names], "o", color="tab:red", ms=8,
+            label=f"model before (baseline): chi$^2$ {base['chi_square']:.3g} on {base['degrees_of_freedom']}, "
+                  f"p = {base['p_value']:.3g}")
     if after is not None:
-        model = np.array([after["features"][n]["model"] for n in names])
-        ax.plot(x + 0.12, (model - value) / sd, "^", color="tab:blue", ms=7, label=f"model after (+ {after_name})")
-    ax.axhline(0.0, color="k", lw=0.6)
+        ax.plot(x + 0.1, [after["features"][n]["z"] for n in names], "^", color="tab:blue", ms=8,
+                label=f"model after (+ {after_name}): chi$^2$ {after['chi_square']:.3g} on "
+                      f"{after['degrees_of_freedom']}, p = {after['p_value']:.3g}")
+    else:
+        ax.plot([], [], " ", label="no extended model was fitted")
     ax.set_xticks(x)
-    ax.set_xticklabels(names, rotation=35, ha="right", fontsize=7)
-    ax.set_ylabel("(model - measured) / noise sd")
+    ax.set_xticklabels([f"{m['feature']}\n= {m['value']:.4g} {m.get('unit', '')}".rstrip() for m in measured],
+                       rotation=30, ha="right", fontsize=7)
+    ax.set_ylabel("z = (measured - model) / sd")
     verdict = summary.get("verdict") or {}
     ax.set_title(f"Diagnosis: {verdict.get('kind', '')}" + (f", cause {verdict['cause']}" if verdict.get("cause") else ""),
                  fontsize=10)

@@ -30,8 +30,8 @@ double default_snapshot_interval(Scenario s) {
   switch (s) {
     case Scenario::kOedometer: return 0.05;
     case Scenario::kShear: return 0.2;
-    case Scenario::kScene:
-    case Scenario::kRepose: return 0.0;
+    case Scenario::kRepose: return 0.5;
+    case Scenario::kScene: return 0.0;
   }
   return 0.0;
 }

@@ -128,7 +128,8 @@ struct SceneSpec {                    // [scene]
 struct OutputSpec {
   // Simulated seconds between particle snapshots in result.h5 (and result.xmf), counted from
   // the start of the test (the oedometer's loading, the shear box's consolidation of each
-  // load, the scene's first step); 0 = none. Default per scenario: kDefaultSnapshotInterval.
+  // load, the angle of repose's lift, the scene's first step); 0 = none. Default per
+  // scenario: default_snapshot_interval.
   double snapshot_interval = 0.0;
   // output.plots: draw the result's plots into DIR/plots/ after the run (cli/plot_command.hpp).
   bool plots = true;
@@ -162,9 +163,9 @@ struct RunConfig {
 enum class Scenario { kOedometer, kShear, kScene, kRepose };
 const char* to_string(Scenario s);
 
-// Defaults of output.snapshot_interval (s): a few dozen snapshots of the paper's tests (the
-// oedometer loads for ~1-2 s, the shear box consolidates and shears for ~6-7 s); none for a
-// scene or the angle of repose (set it to have them).
+// Defaults of output.snapshot_interval (s): a few dozen snapshots of each test (the
+// oedometer loads for ~1-2 s, the shear box consolidates and shears for ~6-7 s, the angle of
+// repose's cylinder is lifted for ~11 s); none for a scene (set it to have them).
 double default_snapshot_interval(Scenario s);
 
 // Reads and validates everything the scenario needs, then rejects unknown keys.

@@ -1,9 +1,11 @@
 """Plots (issue 42) drawn by real runs and read back as PNG files: every run writes
 DIR/plots/, `colza plot DIR` draws them again, a calibration's report.md embeds its plots,
-and a missing plotting stack is a warning (exit 0, the result complete), never a failure.
+a diagnosis's summary is drawn, and a missing plotting stack is a warning (exit 0, the
+result complete), never a failure.
 Each plot must be a PNG of the script's size (python/colzaplot/common.py: 1000 x 625) whose
 pixels are not blank."""
 import os
+import shutil
 import sys
 
 from pictures_common import Scratch, args, png_size, run_colza, skip
@@ -92,7 +94,22 @@ def calibration(colza, source, tmp):
         assert f.read().count("## Plots") == 1
 
 
-CASES = {"oedometer": oedometer, "shear": shear, "calibration": calibration}
+def diagnosis(colza, source, tmp):
+    """A diagnosis's plots from its summary.json: data/diagnosis_summary.json is what
+    `colza diagnose` wrote for data/diagnosis_small_spec.toml (a verdict "unexplained", three
+    candidates: 42 DEM runs, 3-4 minutes, too long to repeat here)."""
+    d = os.path.join(tmp, "diagnosis")
+    os.makedirs(d)
+    shutil.copy(os.path.join(source, "tests", "pictures", "data", "diagnosis_summary.json"),
+                os.path.join(d, "summary.json"))
+    run_colza(colza, "plot", d)
+    expected = ["diagnosis_features.png", "diagnosis_similarity.png"]
+    assert plots_of(d) == expected, plots_of(d)
+    for name in expected:
+        check_png(os.path.join(d, "plots", name))
+
+
+CASES = {"oedometer": oedometer, "shear": shear, "calibration": calibration, "diagnosis": diagnosis}
 
 
 def main():
