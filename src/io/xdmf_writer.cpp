@@ -18,8 +18,9 @@ struct Item {
   std::size_t cols;       // values per row (1: a scalar)
 };
 
-constexpr Item kFloat3(const char* name) { return {name, "Float", 4, 3}; }
-constexpr Item kFloat1(const char* name) { return {name, "Float", 4, 1}; }
+// A dataset of single-precision vectors (3 a row) or scalars named `name`.
+constexpr Item float3(const char* name) { return {name, "Float", 4, 3}; }
+constexpr Item float1(const char* name) { return {name, "Float", 4, 1}; }
 
 void data_item(std::ostream& x, const std::string& indent, const Item& item, std::size_t rows, const std::string& h5,
                const std::string& dataset) {
@@ -41,7 +42,7 @@ void time_and_geometry(std::ostream& x, const Snapshot& s, std::size_t points, c
                        const std::string& dataset) {
   x << "        <Time Value=\"" << format_shortest(s.time) << "\"/>\n";
   x << "        <Geometry GeometryType=\"XYZ\">\n";
-  data_item(x, "          ", kFloat3(""), points, h5, dataset);
+  data_item(x, "          ", float3(""), points, h5, dataset);
   x << "        </Geometry>\n";
 }
 
@@ -50,7 +51,7 @@ void particles_grid(std::ostream& x, const Snapshot& s, const std::string& h5, c
   x << "      <Grid Name=\"particles\" GridType=\"Uniform\">\n";
   x << "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\"/>\n";
   time_and_geometry(x, s, n, h5, g + "/position");
-  for (const Item& item : {kFloat1("radius"), kFloat3("velocity"), kFloat3("angular_velocity"), kFloat3("force"),
+  for (const Item& item : {float1("radius"), float3("velocity"), float3("angular_velocity"), float3("force"),
                            Item{"coordination", "Int", 4, 1}})
     attribute(x, item, "Node", n, h5, g);
   x << "      </Grid>\n";
@@ -63,7 +64,7 @@ void contacts_grid(std::ostream& x, const Snapshot& s, const std::string& h5, co
   data_item(x, "          ", Item{"pairs", "Int", 4, 2}, m, h5, g + "/contacts/pairs");
   x << "        </Topology>\n";
   time_and_geometry(x, s, s.particles(), h5, g + "/position");
-  for (const Item& item : {kFloat1("normal_force"), kFloat3("shear_force"), Item{"bonded", "UChar", 1, 1}})
+  for (const Item& item : {float1("normal_force"), float3("shear_force"), Item{"bonded", "UChar", 1, 1}})
     attribute(x, item, "Cell", m, h5, g + "/contacts");
   x << "      </Grid>\n";
 }
@@ -76,7 +77,7 @@ void walls_grid(std::ostream& x, const Snapshot& s, const std::string& h5, const
   x << "        </Topology>\n";
   time_and_geometry(x, s, s.wall_point_count(), h5, g + "/walls/points");
   attribute(x, Item{"wall", "Int", 4, 1}, "Cell", q, h5, g + "/walls");
-  attribute(x, kFloat3("force"), "Cell", q, h5, g + "/walls");
+  attribute(x, float3("force"), "Cell", q, h5, g + "/walls");
   x << "      </Grid>\n";
 }
 
