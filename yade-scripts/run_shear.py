@@ -78,6 +78,11 @@ def read_shear_config(path):
             if v != "per_wall":
                 raise cy.ConfigError(f'shear_box.edge_contacts = "{v}": YADE\'s boxes give one contact per '
                                      'plate, which is "per_wall" only')
+        elif k == "preconsolidation_stress":
+            # colza's alone: this script consolidates once, at the load it shears at.
+            if float(v) != 0.0:
+                raise cy.ConfigError("shear_box.preconsolidation_stress: overconsolidation is not in the YADE shear "
+                                     "script (yade-scripts/run_shear.py consolidates at the shearing load only)")
         elif k in b:
             b[k] = int(v) if k == "record_interval" else float(v)
         else:

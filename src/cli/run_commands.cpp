@@ -199,6 +199,11 @@ int run_command(const RunOptions& opt) {
     if (opt.out_dir.empty()) throw ConfigError("--out", "", "an output directory is required");
     if (scenario == Scenario::kShear && !series && !(opt.normal_stress > 0.0))
       throw ConfigError("--normal-stress", "", "`colza run shear` needs --normal-stress PA (> 0)");
+    if (scenario == Scenario::kShear && !series && config.shear_box.preconsolidation_stress > 0.0 &&
+        opt.normal_stress > config.shear_box.preconsolidation_stress)
+      throw ConfigError("--normal-stress", "", format_shortest(opt.normal_stress) + " Pa is above "
+                        "shear_box.preconsolidation_stress = " + format_shortest(config.shear_box.preconsolidation_stress) +
+                        " Pa: a sample is preconsolidated at a stress above the load it is sheared at");
     check_output_dir(opt.out_dir, opt.force, "run", series ? "sample.json" : "");  // a stopped series is resumed
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "colza: error: %s\n", e.what());

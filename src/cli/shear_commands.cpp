@@ -74,6 +74,10 @@ std::vector<std::string> load_warnings(const RunConfig& c, const ShearSample& sa
     w.push_back("the plate did not hold the normal stress within shear_box.consolidation_tolerance before "
                 "shear_box.consolidation_max_time = " + format_shortest(c.shear_box.consolidation_max_time) +
                 " s; shearing began anyway");
+  if (c.shear_box.preconsolidation_stress > 0.0 && !r.preconsolidated)
+    w.push_back("the plate did not hold shear_box.preconsolidation_stress = " +
+                format_shortest(c.shear_box.preconsolidation_stress) + " Pa within shear_box.consolidation_max_time; "
+                "the sample was unloaded to the normal stress anyway");
   if (r.mean_normal_stress_error > kHeldStressError)
     w.push_back("during shearing the normal stress was " + format_significant(r.mean_normal_stress, 4) +
                 " Pa on average against " + format_shortest(r.normal_stress_target) + " Pa (mean error " +
@@ -124,6 +128,8 @@ nlohmann::json load_summary(const RunConfig& c, const ShearSample& sample, const
   s["mean_normal_stress_error"] = r.mean_normal_stress_error;
   s["consolidated"] = r.consolidated;
   s["consolidation_time"] = r.consolidation_time;
+  s["preconsolidation_stress"] = c.shear_box.preconsolidation_stress;
+  if (c.shear_box.preconsolidation_stress > 0.0) s["preconsolidated"] = r.preconsolidated;
   s["particles_outside"] = r.particles_outside;
   s["warnings"] = load_warnings(c, sample, r, series);
   s["bond_install"] = to_string(c.contact.bond_install);

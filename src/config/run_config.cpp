@@ -155,6 +155,12 @@ ShearBoxSpec read_shear_box(const ConfigNode& t, const ParticleSpec& particle) {
   b.consolidation_window = t.positive("consolidation_window", b.consolidation_window);
   b.consolidation_plate_speed = t.positive("consolidation_plate_speed", b.consolidation_plate_speed);
   b.consolidation_max_time = t.positive("consolidation_max_time", b.consolidation_max_time);
+  b.preconsolidation_stress = t.non_negative("preconsolidation_stress", b.preconsolidation_stress);
+  for (double v : b.normal_stresses)
+    if (b.preconsolidation_stress > 0.0 && b.preconsolidation_stress < v)
+      t.fail("preconsolidation_stress", format_shortest(b.preconsolidation_stress) + " Pa is below the normal stress " +
+                                            format_shortest(v) + " Pa of shear_box.normal_stresses: a sample is "
+                                            "preconsolidated at a stress above every load it is sheared at (0 = none)");
   b.record_interval = t.integer("record_interval", b.record_interval, 1);
   b.packing_file = t.string("packing_file", "");
   b.edge_contacts = t.choice("edge_contacts", "per_wall", {"per_wall", "per_surface"}) == "per_wall"

@@ -97,6 +97,11 @@ struct ShearBoxSpec {                // [shear_box], physics.md section 4
   double consolidation_window = 0.02;     // s, stress held and plate still for this long
   double consolidation_plate_speed = 1e-4;  // m/s, "still" means slower than this
   double consolidation_max_time = 2.0;      // s
+  // Pa; 0 = none. Overconsolidation (soil mechanics' preconsolidation stress; the consolidation
+  // step of Jenike's and Schulze's yield-locus tests, ASTM D6128, without the pre-shear): each
+  // load is first consolidated at this stress, then unloaded to its normal stress and sheared.
+  // Cohesion that grows with the stress a bulk has carried shows as strength at the lower load.
+  double preconsolidation_stress = 0.0;
   std::int64_t record_interval = 100;       // steps between curve samples
   std::string packing_file;           // optional settled packing (skips generation and settling)
   BoxEdgeContacts edge_contacts = BoxEdgeContacts::kPerWall;  // shear_box.edge_contacts

@@ -26,6 +26,12 @@ Eigen::VectorXd measured_values(const DiagnosisProblem& p) {
   return m;
 }
 
+Eigen::VectorXd lab_samples(const DiagnosisProblem& p) {
+  Eigen::VectorXd n(static_cast<Eigen::Index>(p.features.size()));
+  for (std::size_t i = 0; i < p.features.size(); ++i) n[static_cast<Eigen::Index>(i)] = p.features[i].samples;
+  return n;
+}
+
 Eigen::VectorXd measured_sd(const DiagnosisProblem& p) {
   Eigen::VectorXd u(static_cast<Eigen::Index>(p.features.size()));
   for (std::size_t i = 0; i < p.features.size(); ++i) u[static_cast<Eigen::Index>(i)] = p.features[i].uncertainty;
@@ -85,7 +91,7 @@ Fit realise_fit(const DiagnosisProblem& p, CountingModel& model, const std::stri
   const std::vector<Eigen::VectorXd> ys = realisations(model, point, p.settings.replicates);
   f.mean_features = mean_of(ys);
   f.realisation_features = ys;
-  f.noise = make_noise_model(measured_sd(p), p.measured_correlation, ys);
+  f.noise = make_noise_model(measured_sd(p), p.measured_correlation, ys, lab_samples(p));
   return f;
 }
 
@@ -100,12 +106,42 @@ void judge_refit(const DiagnosisProblem& p, Fit& f, const Eigen::MatrixXd& A, co
   Eigen::VectorXd d = noise.whiten(A).completeOrthogonalDecomposition().solve(noise.whiten(r));
   f.held_at_bound.assign(static_cast<std::size_t>(d.size()), false);
   for (Eigen::Index j = 0; j < d.size(); ++j) {
-    const double moved = std::clamp(f.parameters[j] + d[j], lower[j], upper[j]) - f.parameters[j];
-    f.held_at_bound[static_cast<std::size_t>(j)] = moved != d[j];
-    d[j] = moved;
+    const double wanted = f.parameters[j] + d[j];
+    f.held_at_bound[static_cast<std::size_t>(j)] = wanted < lower[j] || wanted > upper[j];
+    d[j] = std::clamp(wanted, lower[j], upper[j]) - f.parameters[j];
   }
   f.refit_shift = d;
   f.adequacy = test_adequacy(noise, r - A * d, static_cast<int>(A.cols()), p.settings.significance);
+}
+
+// d y / d x of the least-squares plane y = c + J x through every run of the model's own seed
+// (realisation 0): the calibration's design spans the ranges and its refinements crowd the
+// solution, so this is a slope over the whole range (its own local planes, fitted on the
+// crowded points, are too short to resolve a slope under the DEM's chaos). Empty when the
+// runs do not determine a plane (fewer than np + 2, or no spread along a parameter).
+Eigen::MatrixXd plane_slopes(const std::vector<calibration::Run>& runs, const std::vector<Parameter>& parameters) {
+  std::vector<const calibration::Run*> own;
+  for (const auto& r : runs)
+    if (r.replicate == 0) own.push_back(&r);
+  const Eigen::Index np = static_cast<Eigen::Index>(parameters.size());
+  if (own.empty() || static_cast<Eigen::Index>(own.size()) < np + 2) return {};
+  Eigen::MatrixXd X(static_cast<Eigen::Index>(own.size()), np + 1), Y(static_cast<Eigen::Index>(own.size()), own[0]->y.size());
+  for (std::size_t k = 0; k < own.size(); ++k) {
+    const Eigen::Index row = static_cast<Eigen::Index>(k);
+    X(row, 0) = 1.0;
+    for (Eigen::Index j = 0; j < np; ++j) {
+      const Parameter& par = parameters[static_cast<std::size_t>(j)];
+      X(row, j + 1) = (own[k]->x[j] - par.lower) / (par.upper - par.lower);  // scaled to [0, 1] for conditioning
+    }
+    Y.row(row) = own[k]->y.transpose();
+  }
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(X);
+  if (qr.rank() < np + 1) return {};
+  const Eigen::MatrixXd beta = qr.solve(Y);  // (np + 1) x features
+  Eigen::MatrixXd J(Y.cols(), np);
+  for (Eigen::Index j = 0; j < np; ++j)
+    J.col(j) = beta.row(j + 1).transpose() / (parameters[static_cast<std::size_t>(j)].upper - parameters[static_cast<std::size_t>(j)].lower);
+  return J;
 }
 
 // Step 1: the baseline calibrated and judged.
@@ -116,7 +152,7 @@ Fit fit_baseline(const DiagnosisProblem& p, CountingModel& model) {
     centre[static_cast<Eigen::Index>(j)] = 0.5 * (p.parameters[j].lower + p.parameters[j].upper);
   // The features' noise before the fit, from realisations at the centre: the solver's weights.
   const std::vector<Eigen::VectorXd> at_centre = realisations(model, ModelPoint{centre}, std::max(2, std::min(4, p.settings.replicates)));
-  const NoiseModel prior = make_noise_model(measured_sd(p), p.measured_correlation, at_centre);
+  const NoiseModel prior = make_noise_model(measured_sd(p), p.measured_correlation, at_centre, lab_samples(p));
   calibration::LoopOptions opt;
   opt.jobs = model.jobs();
   const calibration::CalibrationResult r = calibration::calibrate_sequential(
@@ -126,12 +162,20 @@ Fit fit_baseline(const DiagnosisProblem& p, CountingModel& model) {
   f.parameters = r.solution;
   f.sigma = r.sigma;
   f.calibration_runs = static_cast<int>(r.forward_runs());
+  f.design_sensitivity = plane_slopes(r.runs, p.parameters);
   return f;
 }
 
-// The baseline's sensitivities at the fit by common random numbers: realisations 1..n of a
-// step along each parameter against the same realisations at the fit.
+// The baseline's sensitivities: the plane through the calibration's runs where they
+// determine one (a slope over the whole range, at one seed), else by
+// common random numbers at the fit: realisations 1..n of a step along each parameter against
+// the same realisations at the fit. A step of a tenth of a range moves a DEM feature by less
+// than its chaotic scatter between packings, so the planes are the better estimate.
 Eigen::MatrixXd measure_sensitivities(const DiagnosisProblem& p, CountingModel& model, const Fit& base) {
+  const Eigen::MatrixXd& D = base.design_sensitivity;
+  if (D.rows() == static_cast<Eigen::Index>(p.features.size()) &&
+      D.cols() == static_cast<Eigen::Index>(p.parameters.size()) && D.allFinite())
+    return D;
   const int n = std::min(p.settings.signature_seeds, static_cast<int>(base.realisation_features.size()));
   const std::vector<Eigen::VectorXd> at_fit(base.realisation_features.begin(), base.realisation_features.begin() + n);
   std::vector<std::pair<ModelPoint, int>> jobs;

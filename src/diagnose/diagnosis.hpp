@@ -34,6 +34,7 @@ struct Feature {
   std::string test;          // the lab test (or load) it comes from: the unit held out in step 3
   double measured = 0.0;
   double uncertainty = 0.0;  // standard uncertainty of the measurement (> 0)
+  int samples = 1;           // lab samples the measured value is the mean of (their scatter counts 1/samples)
 };
 
 struct Candidate {
@@ -61,7 +62,7 @@ struct DiagnosisSettings {
   double ambiguity_cosine = 0.9;    // |cos| of two projected signatures above which the data cannot tell them apart
   int calibration_runs = 12;        // budget of each calibration's sequential search
   int extend_at_most = 2;           // leading candidates whose extended models are calibrated
-  double sensitivity_step = 0.1;    // baseline sensitivities: step as a fraction of the parameter's range
+  double sensitivity_step = 0.1;    // fraction of a range: extended calibrations' first steps; baseline sensitivities without planes
   int jobs = 1;                     // forward evaluations side by side
   std::function<void(const std::string&)> on_progress;  // one line per stage; may be empty
 };
@@ -87,6 +88,10 @@ struct Fit {
   AdequacyTest adequacy;          // of the residual after the linearised refit
   bool strength_at_upper_bound = false;  // extended: the mechanism's strength pinned at its physical top
   int calibration_runs = 0;
+  // d feature / d parameter of the least-squares plane through the calibration's runs at the
+  // model's own seed (its design spans the ranges: common random numbers over steps the
+  // scatter cannot hide); empty when they do not determine one.
+  Eigen::MatrixXd design_sensitivity;
 };
 
 struct ExtendedFit {

@@ -60,13 +60,14 @@ DiagnosisTest read_test(const ConfigNode& t, const std::string& spec_file, std::
   test.name = required_string(t, "name", "the test's name, e.g. \"oedometer\"");
   if (!names.insert(test.name).second) t.fail("name", "repeats the name of another test");
   if (test.name.find(':') != std::string::npos) t.fail("name", "must not contain ':'");
-  t.require("scenario", "\"oedometer\" or \"shear\"");
-  const std::string scenario = t.choice("scenario", "", {"oedometer", "shear"});
-  test.scenario = scenario == "shear" ? Scenario::kShear : Scenario::kOedometer;
+  t.require("scenario", "\"oedometer\", \"shear\" or \"repose\"");
+  const std::string scenario = t.choice("scenario", "", {"oedometer", "shear", "repose"});
+  test.scenario = scenario == "shear" ? Scenario::kShear : scenario == "repose" ? Scenario::kRepose : Scenario::kOedometer;
   test.config = resolve(spec_file, required_string(t, "config", "the model config of this test"));
   if (const std::string why = unreadable_file_reason(test.config); !why.empty())
     t.fail("config", "the model config " + why);
   test.set = string_list(t, "set");
+  const int samples = static_cast<int>(t.integer("samples", 1, 1));  // lab samples each measured value is the mean of
   std::set<std::string> feature_names;
   for (const ConfigNode& f : t.table_array("features")) {
     Feature feature;
@@ -78,6 +79,7 @@ DiagnosisTest read_test(const ConfigNode& t, const std::string& spec_file, std::
     feature.uncertainty = f.positive("uncertainty", 0.0);
     feature.unit = f.string("unit", "");
     feature.test = test.name;
+    feature.samples = samples;
     test.features.push_back(feature);
   }
   if (test.features.empty())

@@ -15,7 +15,7 @@ namespace colza::diagnose {
 
 struct DiagnosisTest {
   std::string name;                // its features' prefix ("<name>:<feature>") and the unit held out
-  Scenario scenario = Scenario::kOedometer;  // oedometer (single loading or oedometer.cycles) or shear (a series)
+  Scenario scenario = Scenario::kOedometer;  // oedometer (single loading or oedometer.cycles), shear (a series) or repose
   std::string config;              // the model config, resolved against the spec's folder
   std::vector<std::string> set;    // overrides of this test ("key=value")
   std::vector<Feature> features;   // name = the run feature's name (calibration/run_features.hpp)

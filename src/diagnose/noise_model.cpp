@@ -44,7 +44,7 @@ Eigen::MatrixXd shrunk_covariance(const std::vector<Eigen::VectorXd>& ys, double
 }
 
 NoiseModel make_noise_model(const Eigen::VectorXd& u, const Eigen::MatrixXd& correlation,
-                            const std::vector<Eigen::VectorXd>& ys) {
+                            const std::vector<Eigen::VectorXd>& ys, const Eigen::VectorXd& lab_samples) {
   const Eigen::Index f = u.size();
   NoiseModel m;
   Eigen::MatrixXd U = correlation.size() == 0 ? Eigen::MatrixXd(u.array().square().matrix().asDiagonal())
@@ -56,7 +56,9 @@ NoiseModel make_noise_model(const Eigen::VectorXd& u, const Eigen::MatrixXd& cor
     const Eigen::MatrixXd S = shrunk_covariance(ys, m.shrinkage);
     const double n = static_cast<double>(ys.size());
     const double small_sample = n > 3.0 ? (n - 1.0) / (n - 3.0) : 1.0;
-    m.covariance += (1.0 + 1.0 / n) * small_sample * S;
+    const Eigen::VectorXd n_lab = lab_samples.size() == f ? lab_samples : Eigen::VectorXd::Ones(f);
+    const Eigen::VectorXd D = (n_lab.cwiseInverse().array() + 1.0 / n).sqrt().matrix();
+    m.covariance += small_sample * (D.asDiagonal() * S * D.asDiagonal());
     m.scatter_sd = S.diagonal().cwiseSqrt();
   }
   m.sd = m.covariance.diagonal().cwiseSqrt();

@@ -2,12 +2,12 @@
 //
 // A measured feature m_i and the model's mean ybar_i over R realisations (seeds) at the
 // fitted parameters differ by r = m - ybar. Its covariance is
-//     Sigma = U + (1 + 1/R) c S,
+//     Sigma = U + c D S D,   D = diag(sqrt(1/n_i + 1/R)),
 // U = D_u C D_u the measurement's (u_i the stated standard uncertainty, C its correlation),
-// S the realisation scatter of one run (estimated from the R realisations), counted once for
-// the measured sample (one realisation of the material, its sample-to-sample scatter taken
-// as the model's: conservative for a lab sample larger than the simulated one) and once
-// divided by R for the mean. c = (n - 1) / (n - 3), n = R, corrects for S being estimated
+// S the realisation scatter of one run (estimated from the R realisations), counted once per
+// lab sample for the measured value, a mean over n_i samples (each a realisation of the
+// material, its sample-to-sample scatter taken as the model's: conservative for a lab sample
+// larger than the simulated one), and once divided by R for the model's mean. c = (n - 1) / (n - 3), n = R, corrects for S being estimated
 // (E[sigma^2 / s^2] = (n - 1) / (n - 3) for a sample variance with n - 1 degrees of freedom),
 // so the whitened residual's mean square is 1 under the null.
 //
@@ -39,9 +39,10 @@ Eigen::MatrixXd shrunk_covariance(const std::vector<Eigen::VectorXd>& realisatio
 
 // Sigma from the measurement's standard uncertainties (and correlation; empty: independent)
 // and the model's realisations at one point (R >= 4 for the small-sample correction; fewer:
-// c = 1 and the caller should warn).
+// c = 1 and the caller should warn); `lab_samples` n_i per feature (empty: one each).
 NoiseModel make_noise_model(const Eigen::VectorXd& measurement_sd, const Eigen::MatrixXd& measurement_correlation,
-                            const std::vector<Eigen::VectorXd>& realisations);
+                            const std::vector<Eigen::VectorXd>& realisations,
+                            const Eigen::VectorXd& lab_samples = Eigen::VectorXd());
 
 Eigen::VectorXd mean_of(const std::vector<Eigen::VectorXd>& realisations);
 

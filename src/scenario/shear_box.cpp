@@ -171,7 +171,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
     plate.velocity = Vec3(0.0, 0.0, -servo.advance_speed(plate.force.z(), k, w.dt));
   };
 
-  // --- consolidation under the servo ------------------------------------------------
+  // --- consolidation under the servo (after a preconsolidation, when set) -----------
   stepper.set_integration_sums({.unbalanced = false, .damping_work = false});  // neither is read from here on
   // Between the halves of a step only the walls (servo, forces) and contact counts are read.
   stepper.set_between_halves(Stepper::BetweenHalves::kWallsOnly);
@@ -179,31 +179,36 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
   progress.start_stage("consolidation");
   const double t0 = world.time;
   SnapshotRecorder snapshots(snapshot_interval, t0);
-  double held_since = -1.0;
   std::uint64_t steps = 0;
-  while (true) {
-    stepper.begin_step(world);
-    control_plate(world);
-    const Wall& plate = world.walls[ids.plate];
-    const double error = std::abs(plate.force.z() - servo.target_force) / servo.target_force;
-    const bool held = error < b.consolidation_tolerance && std::abs(plate.velocity.z()) < b.consolidation_plate_speed;
-    if (!held) held_since = -1.0;
-    else if (held_since < 0.0) held_since = world.time;
-    if (progress.active() && steps % 2000 == 0) {
-      char detail[96];
-      std::snprintf(detail, sizeof detail, "sigma %.2f kPa (target %.2f), t = %.3f s", plate.force.z() / area * 1e-3,
-                    normal_stress * 1e-3, world.time - t0);
-      progress.update(-1.0, detail);
+  // Holds `stress` (Pa) until the plate force is within the tolerance and the plate still for
+  // the consolidation window; false when consolidation_max_time (from this call) runs out.
+  const auto consolidate_at = [&](double stress) {
+    servo.target_force = stress * area;
+    const double start = world.time;
+    double held_since = -1.0;
+    while (true) {
+      stepper.begin_step(world);
+      control_plate(world);
+      const Wall& plate = world.walls[ids.plate];
+      const double error = std::abs(plate.force.z() - servo.target_force) / servo.target_force;
+      const bool held = error < b.consolidation_tolerance && std::abs(plate.velocity.z()) < b.consolidation_plate_speed;
+      if (!held) held_since = -1.0;
+      else if (held_since < 0.0) held_since = world.time;
+      if (progress.active() && steps % 2000 == 0) {
+        char detail[96];
+        std::snprintf(detail, sizeof detail, "sigma %.2f kPa (target %.2f), t = %.3f s", plate.force.z() / area * 1e-3,
+                      stress * 1e-3, world.time - t0);
+        progress.update(-1.0, detail);
+      }
+      stepper.finish_step(world);
+      ++steps;
+      snapshots.observe(world);
+      if (held_since >= 0.0 && world.time - held_since >= b.consolidation_window) return true;
+      if (world.time - start >= b.consolidation_max_time) return false;
     }
-    stepper.finish_step(world);
-    ++steps;
-    snapshots.observe(world);
-    if (held_since >= 0.0 && world.time - held_since >= b.consolidation_window) {
-      r.consolidated = true;
-      break;
-    }
-    if (world.time - t0 >= b.consolidation_max_time) break;
-  }
+  };
+  if (b.preconsolidation_stress > 0.0) r.preconsolidated = consolidate_at(b.preconsolidation_stress);
+  r.consolidated = consolidate_at(normal_stress);
   stepper.require_sound_state(world);  // a blow-up within the last check interval, too
   progress.end_stage();
   r.consolidation_time = world.time - t0;

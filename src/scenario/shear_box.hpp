@@ -50,7 +50,8 @@ struct ShearLoadResult {
   double normal_stress_target = 0.0;   // Pa
   std::size_t particles = 0;
   bool consolidated = false;           // plate held the stress within tolerance before shearing
-  double consolidation_time = 0.0;     // s (simulated)
+  double consolidation_time = 0.0;     // s (simulated), including any preconsolidation
+  bool preconsolidated = false;        // held shear_box.preconsolidation_stress before unloading (when set)
   std::size_t bonds_installed = 0;
   Table curve{{"time", "shear_displacement", "shear_force", "shear_stress", "normal_stress", "plate_height",
                "dilatancy", "contacts", "bonds"},

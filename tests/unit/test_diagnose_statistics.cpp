@@ -53,6 +53,11 @@ TEST(DiagnoseStatistics, NoiseModelAddsMeasurementAndCorrectedScatter) {
   // Whitening: L^-1 Sigma L^-T = I.
   const Eigen::MatrixXd w = n.whitener * n.covariance * n.whitener.transpose();
   EXPECT_TRUE(w.isApprox(Eigen::MatrixXd::Identity(2, 2), 1e-12));
+  // A measured value that is the mean of 3 lab samples counts their scatter 1/3:
+  // Sigma_00 = u0^2 + (1/3 + 1/4) (3/1) (4/3).
+  const NoiseModel mean_of_three = make_noise_model(Eigen::Vector2d(0.5, 0.2), {}, ys, Eigen::Vector2d(3, 3));
+  EXPECT_NEAR(mean_of_three.covariance(0, 0), 0.25 + (1.0 / 3.0 + 0.25) * 3.0 * 4.0 / 3.0, 1e-12);
+  EXPECT_NEAR(mean_of_three.covariance(1, 1), 0.04, 1e-15);
 }
 
 TEST(DiagnoseStatistics, ShrinkageKeepsStrongCorrelationAndDropsNoise) {
