@@ -67,7 +67,7 @@ nlohmann::json without_timing(const nlohmann::json& summary) {
 void write_result_h5(OutputStaging& out, const std::string& scenario, const RunConfig& c,
                      const nlohmann::json& summary, const std::string& table_group, const Table& table,
                      std::initializer_list<NamedState> states, const SnapshotSeries* snapshots) {
-  Hdf5Writer h5(out.path("result.h5"));
+  Hdf5Writer h5(out.path("result.h5"), /*many_chunked=*/snapshots && !snapshots->empty());
   write_provenance(h5, scenario, c.seed, c.resolved_toml);
   h5.attribute("summary_json", without_timing(summary).dump());
   h5.write_table(table_group, table);

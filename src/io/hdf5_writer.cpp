@@ -8,12 +8,13 @@
 
 namespace colza {
 
-Hdf5Writer::Hdf5Writer(const std::string& file) : name_(file) {
+Hdf5Writer::Hdf5Writer(const std::string& file, bool many_chunked) : name_(file) {
   translating_errors([&] {
-    // Format of HDF5 1.8 or later: dense attribute storage (attributes over 64 KiB). Its
-    // root group's header would carry times; the file creation list sets them off.
+    // Format of HDF5 1.8 or later: dense attribute storage (attributes over 64 KiB); 1.10's
+    // with snapshots (`many_chunked`). Its root group's header would carry times; the file
+    // creation list sets them off.
     H5::FileAccPropList access;
-    access.setLibverBounds(H5F_LIBVER_V18, H5F_LIBVER_LATEST);
+    access.setLibverBounds(many_chunked ? H5F_LIBVER_V110 : H5F_LIBVER_V18, H5F_LIBVER_LATEST);
     H5::FileCreatPropList creation;
     if (H5Pset_obj_track_times(creation.getId(), false) < 0)
       throw H5::PropListIException("H5Pset_obj_track_times", "failed on the file creation list");

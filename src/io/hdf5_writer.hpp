@@ -19,7 +19,8 @@
 // Groups and datasets carry no creation or modification times, so equal results give equal
 // files, byte for byte. The file format is HDF5 1.8's or later (read by any HDF5 >= 1.8 and
 // h5py), whose dense attribute storage holds a config_toml longer than 64 KiB (a scene
-// listing a thousand particles inline); the 1.6 format refuses such an attribute.
+// listing a thousand particles inline); the 1.6 format refuses such an attribute. A file
+// with snapshots is in HDF5 1.10's format (Hdf5Writer's `many_chunked`).
 #pragma once
 #include <memory>
 #include <stdexcept>
@@ -45,7 +46,12 @@ class Hdf5WriteError : public OutputWriteError {
 
 class Hdf5Writer {
  public:
-  explicit Hdf5Writer(const std::string& file);
+  // `many_chunked`: the file will hold many small chunked datasets (snapshots), so it is
+  // written in HDF5 1.10's format, whose chunk indexes need no B-tree for a dataset of one
+  // chunk (1.8's take ~2.1 KB each: a small oedometer's 9 snapshots of 117 spheres took
+  // 209 KB instead of 530 KB); read by HDF5 >= 1.10 (Debian 12's 1.10.8, h5py, ParaView).
+  // Without it, HDF5 1.8's format.
+  explicit Hdf5Writer(const std::string& file, bool many_chunked = false);
   ~Hdf5Writer();
   void attribute(const std::string& name, const std::string& value);
   void attribute(const std::string& name, double value);
