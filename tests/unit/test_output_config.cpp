@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "config/plausibility.hpp"
 #include "config/run_config.hpp"
 #include "scenario/snapshot_recorder.hpp"
 #include "walls/wall_mesh.hpp"
@@ -58,6 +59,17 @@ TEST(OutputConfig, AnAbsentTableLeavesTheResolvedConfigAsBefore) {
   EXPECT_EQ(oedometer("").resolved_toml.find("output"), std::string::npos);
   EXPECT_NE(oedometer("[output]\nsnapshot_interval = 0.2\n").resolved_toml.find("snapshot_interval"),
             std::string::npos);
+}
+
+TEST(OutputConfig, ASnapshotEveryFewStepsIsWarnedOf) {
+  const auto warned = [](const std::string& toml) {
+    for (const ImplausibleSetting& s : implausible_settings(oedometer(toml), Scenario::kOedometer))
+      if (s.key == "output.snapshot_interval") return true;
+    return false;
+  };
+  EXPECT_TRUE(warned("[output]\nsnapshot_interval = 1e-5\n"));  // 10 us: a snapshot every other step
+  EXPECT_FALSE(warned("[output]\nsnapshot_interval = 0.05\n"));
+  EXPECT_FALSE(warned("[output]\nsnapshot_interval = 0.0\n"));  // none
 }
 
 TEST(WallMesh, ShapesBecomeQuadsCoveringTheParticles) {
