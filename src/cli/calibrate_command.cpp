@@ -1,4 +1,5 @@
 #include "cli/calibrate_command.hpp"
+#include "cli/plot_command.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -267,6 +268,7 @@ int calibrate_command(const CalibrateOptions& opt) {
     if (!md) throw_cannot_write(staging.path("report.md"));
   }
   staging.commit();
+  plot_after_run(out, opt.quiet);  // plots/ and report.md's Plots section (python/colzaplot/report.py)
 
   std::printf("calibrated %s (%s): %zu forward runs (paper design: %zu)\n", to_string(spec.stage), result.mode.c_str(),
               result.runs.size(), ctx.paper_design_runs);

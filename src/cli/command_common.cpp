@@ -6,6 +6,7 @@
 #include "io/format_number.hpp"
 #include "io/hdf5_writer.hpp"
 #include "io/summary.hpp"
+#include "io/xdmf_writer.hpp"
 
 namespace colza {
 
@@ -63,15 +64,22 @@ nlohmann::json without_timing(const nlohmann::json& summary) {
 
 }  // namespace
 
-void write_result_h5(const std::string& file, const std::string& scenario, const RunConfig& c,
+void write_result_h5(OutputStaging& out, const std::string& scenario, const RunConfig& c,
                      const nlohmann::json& summary, const std::string& table_group, const Table& table,
-                     std::initializer_list<NamedState> states) {
-  Hdf5Writer h5(file);
+                     std::initializer_list<NamedState> states, const SnapshotSeries* snapshots) {
+  Hdf5Writer h5(out.path("result.h5"), /*many_chunked=*/snapshots && !snapshots->empty());
   write_provenance(h5, scenario, c.seed, c.resolved_toml);
   h5.attribute("summary_json", without_timing(summary).dump());
   h5.write_table(table_group, table);
   for (const NamedState& st : states) h5.write_particles(st.group, *st.particles);
+  if (snapshots) h5.write_snapshots(*snapshots);
   h5.close();
+  if (snapshots && !snapshots->empty()) write_xdmf(out.path("result.xmf"), *snapshots, "result.h5");
+}
+
+void add_snapshots_summary(nlohmann::json& summary, const SnapshotSeries& snapshots) {
+  if (snapshots.empty()) return;
+  summary["snapshots"] = {{"interval", snapshots.interval}, {"count", snapshots.snapshots.size()}};
 }
 
 std::string settling_warning(const RunConfig& c, const SettleResult& settling) {

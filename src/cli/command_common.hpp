@@ -6,6 +6,8 @@
 #include "cli/run_commands.hpp"
 #include "config/run_config.hpp"
 #include "core/stage_timing.hpp"
+#include "io/output_dir.hpp"
+#include "io/snapshot.hpp"
 #include "io/table.hpp"
 #include "scenario/settling.hpp"
 
@@ -24,10 +26,14 @@ struct NamedState {
 };
 // result.h5: provenance, the summary without the timings add_timing set (so that the same
 // config and seed at the same thread count give the same result.h5, byte for byte;
-// summary.json keeps them) as an attribute, the recorded table and particle states.
-void write_result_h5(const std::string& file, const std::string& scenario, const RunConfig& c,
+// summary.json keeps them) as an attribute, the recorded table and particle states, and the
+// snapshots if there are any (then result.xmf too, beside it: io/xdmf_writer.hpp).
+void write_result_h5(OutputStaging& out, const std::string& scenario, const RunConfig& c,
                      const nlohmann::json& summary, const std::string& table_group, const Table& table,
-                     std::initializer_list<NamedState> states);
+                     std::initializer_list<NamedState> states, const SnapshotSeries* snapshots = nullptr);
+
+// summary.json's "snapshots" {interval (s), count}, set only when the run took any.
+void add_snapshots_summary(nlohmann::json& summary, const SnapshotSeries& snapshots);
 
 // The warning a run's summary carries when its sample's settling did not converge (the
 // oedometer's and the shear box's "warnings"), naming the key to raise.

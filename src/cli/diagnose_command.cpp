@@ -1,4 +1,5 @@
 #include "cli/diagnose_command.hpp"
+#include "cli/plot_command.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -120,6 +121,7 @@ int diagnose_command(const DiagnoseOptions& opt) {
   write_text(staging, "report.md", diagnosis_report(problem, result, ctx));
   write_json(staging.path("summary.json"), diagnosis_summary(problem, result, ctx));
   staging.commit();
+  plot_after_run(out, opt.quiet);  // features before and after, the signatures' similarity (python/colzaplot/diagnosis.py)
   std::printf("verdict: %s\n%s\n", to_string(result.verdict.kind), result.verdict.text.c_str());
   std::printf("%d forward runs (%d test runs reused), %.0f s; report: %s\n", result.forward_runs, dem.reused_runs(),
               ctx.wall_seconds, (out / "report.md").c_str());

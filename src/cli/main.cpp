@@ -15,6 +15,7 @@
 #include "cli/calibrate_command.hpp"
 #include "cli/diagnose_command.hpp"
 #include "cli/features_command.hpp"
+#include "cli/plot_command.hpp"
 #include "cli/run_commands.hpp"
 #include "core/interrupt.hpp"
 #include "core/unstable_motion.hpp"
@@ -169,6 +170,13 @@ int main(int argc, char** argv) {
   features->add_option("--box-length", feat.box_length, "shear: the box's length (m, 1.0): a longer displacement is an error")
       ->check(positive_finite());
 
+  colza::PlotOptions plot_opt;
+  CLI::App* plot = app.add_subcommand("plot", "draw the plots of a result (run, calibration or diagnosis) into DIR/plots/");
+  plot->add_option("dir", plot_opt.dir, "a result directory (it holds summary.json)")->required();
+  plot->add_option("--measured-shear", plot_opt.measured_shear,
+                   "a shear series: CSV of measured strengths (normal_stress, shear_strength in Pa) beside its "
+                   "Mohr-Coulomb line, or 'none' (default: the paper's line, data/measured/)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -204,6 +212,7 @@ int main(int argc, char** argv) {
     if (calibrate->parsed()) return colza::calibrate_command(cal);
     if (diagnose->parsed()) return colza::diagnose_command(diag);
     if (features->parsed()) return colza::features_command(feat);
+    if (plot->parsed()) return colza::plot_command(plot_opt);
   } catch (const colza::Interrupted& e) {
     std::fprintf(stderr, "colza: %s: stopped; the unfinished outputs were removed, earlier results are untouched\n",
                  e.what());

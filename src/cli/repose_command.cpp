@@ -27,7 +27,7 @@ nlohmann::json rest_json(const SettleResult& s) {
 
 void run_repose_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging& out) {
   Progress progress(!opt.quiet);
-  const ReposeResult r = run_repose(c, progress);
+  const ReposeResult r = run_repose(c, progress, c.output.snapshot_interval);
   const ReposeSpec& rs = c.repose;
   nlohmann::json s = common_summary(c, "repose", opt.threads);
   s["particles_generated"] = r.particles_generated;
@@ -77,6 +77,7 @@ void run_repose_scenario(const RunConfig& c, const RunOptions& opt, OutputStagin
   s["warnings"] = warnings;
   s["dt"] = r.dt;
   s["steps"] = r.steps;
+  add_snapshots_summary(s, r.snapshots);
   add_timing(s, r.stages);
 
   // The heap's profile: every sphere's distance from the axis and its top (m).
@@ -87,8 +88,8 @@ void run_repose_scenario(const RunConfig& c, const RunOptions& opt, OutputStagin
   write_csv(out.path("heap_profile.csv"), profile);
   write_packing(out.path("packing.txt"), r.column);
   write_packing(out.path("heap.txt"), r.final_state);
-  write_result_h5(out.path("result.h5"), "repose", c, s, "heap_profile", profile,
-                  {{"particles/column", &r.column}, {"particles/final", &r.final_state}});
+  write_result_h5(out, "repose", c, s, "heap_profile", profile,
+                  {{"particles/column", &r.column}, {"particles/final", &r.final_state}}, &r.snapshots);
   write_json(out.path("summary.json"), s);
 
   std::printf("repose: %zu particles (%zu generated), column %.1f mm high, bulk density %.1f kg/m^3\n", r.particles,

@@ -1,6 +1,7 @@
 #include "cli/run_commands.hpp"
 
 #include "cli/command_common.hpp"
+#include "cli/plot_command.hpp"
 #include "cli/repose_command.hpp"
 #include "cli/shear_commands.hpp"
 
@@ -85,7 +86,7 @@ void print_load_unload(const LoadUnloadAnalysis& a) {
 
 void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging& out) {
   Progress progress(!opt.quiet);
-  const OedometerResult r = run_oedometer(c, progress);
+  const OedometerResult r = run_oedometer(c, progress, c.output.snapshot_interval);
   nlohmann::json s = common_summary(c, "oedometer", opt.threads);
   s["particles_generated"] = r.particles_generated;
   s["particles"] = r.particles;
@@ -125,12 +126,13 @@ void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputSta
   s["dt"] = r.dt_min;
   s["dt_max"] = r.dt_max;
   s["steps"] = r.steps;
+  add_snapshots_summary(s, r.snapshots);
   add_timing(s, r.stages);
 
   write_csv(out.path("curve.csv"), r.curve);
   write_packing(out.path("packing.txt"), r.settled);
-  write_result_h5(out.path("result.h5"), "oedometer", c, s, "curve", r.curve,
-                  {{"particles/settled", &r.settled}, {"particles/final", &r.final_state}});
+  write_result_h5(out, "oedometer", c, s, "curve", r.curve,
+                  {{"particles/settled", &r.settled}, {"particles/final", &r.final_state}}, &r.snapshots);
   write_json(out.path("summary.json"), s);
 
   if (c.oedometer.packing_file.empty())
@@ -159,7 +161,7 @@ void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputSta
 
 void run_scene_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging& out) {
   Progress progress(!opt.quiet);
-  const SceneResult r = run_scene(c, progress);
+  const SceneResult r = run_scene(c, progress, c.output.snapshot_interval);
   nlohmann::json s = common_summary(c, "scene", opt.threads);
   s["particles"] = r.final_state.size();
   s["walls"] = c.scene.walls.size();
@@ -167,9 +169,10 @@ void run_scene_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging
   s["dt"] = r.dt;
   s["steps"] = r.steps;
   s["stopped_by_condition"] = r.stopped_by_condition;
+  add_snapshots_summary(s, r.snapshots);
   add_timing(s, r.stages);
   write_csv(out.path("series.csv"), r.series);
-  write_result_h5(out.path("result.h5"), "scene", c, s, "series", r.series, {{"particles/final", &r.final_state}});
+  write_result_h5(out, "scene", c, s, "series", r.series, {{"particles/final", &r.final_state}}, &r.snapshots);
   write_packing(out.path("packing.txt"), r.final_state);
   write_json(out.path("summary.json"), s);
   std::printf("scene: %zu particles, %zu walls, %llu steps of %.4g s, %.2f s wall\n", r.final_state.size(),
@@ -213,7 +216,11 @@ int run_command(const RunOptions& opt) {
   for (const std::string& w : settings_warnings(config, scenario, series, stresses))
     std::fprintf(stderr, "colza: warning: %s\n", w.c_str());
   try {
-    if (series) return run_shear_series(config, opt);
+    if (series) {
+      const int code = run_shear_series(config, opt);
+      if (code == 0 && config.output.plots) plot_after_run(opt.out_dir, opt.quiet);
+      return code;
+    }
     OutputStaging out(opt.out_dir, opt.force);
     if (scenario == Scenario::kOedometer) run_oedometer_scenario(config, opt, out);
     else if (scenario == Scenario::kShear) run_shear_scenario(config, opt, out);
@@ -221,6 +228,7 @@ int run_command(const RunOptions& opt) {
     else run_scene_scenario(config, opt, out);
     // --force: the earlier result's files that this run does not write go too.
     out.commit(opt.force ? earlier_run_outputs(opt.out_dir) : std::vector<std::string>{});
+    if (config.output.plots) plot_after_run(opt.out_dir, opt.quiet);
   } catch (const ConfigError& e) {
     std::fprintf(stderr, "colza: error: %s\n", e.what());
     return 2;

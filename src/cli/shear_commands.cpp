@@ -141,13 +141,14 @@ nlohmann::json load_summary(const RunConfig& c, const ShearSample& sample, const
   if (sample.settling.in_this_run()) s["settling"] = settling_json(c, sample.settling);
   s["dt"] = r.dt;
   s["steps"] = r.steps;
+  add_snapshots_summary(s, r.snapshots);
   add_timing(s, r.stages);
   return s;
 }
 
 void write_load(OutputStaging& out, const RunConfig& c, const ShearLoadResult& r, const nlohmann::json& s) {
   write_csv(out.path("curve.csv"), r.curve);
-  write_result_h5(out.path("result.h5"), "shear", c, s, "curve", r.curve, {{"particles/final", &r.final_state}});
+  write_result_h5(out, "shear", c, s, "curve", r.curve, {{"particles/final", &r.final_state}}, &r.snapshots);
   write_json(out.path("summary.json"), s);
 }
 
@@ -167,7 +168,7 @@ void run_shear_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging
   Progress progress(!opt.quiet);
   const ShearSample sample = prepare_shear_sample(c, progress);
   write_packing(out.path("packing.txt"), sample.particles);
-  const ShearLoadResult r = run_shear_load(c, sample, opt.normal_stress, progress);
+  const ShearLoadResult r = run_shear_load(c, sample, opt.normal_stress, progress, c.output.snapshot_interval);
   nlohmann::json s = load_summary(c, sample, r, opt.threads, /*series=*/false);
   std::vector<StageTiming> stages = sample.stages;
   stages.insert(stages.end(), r.stages.begin(), r.stages.end());
@@ -322,7 +323,7 @@ int run_shear_series(const RunConfig& config, const RunOptions& opt) {
   run_concurrently(todo.size(), opt.jobs, [&](std::size_t t) {
     const std::size_t k = todo[t];
     Progress load_progress(!opt.quiet && opt.jobs <= 1);
-    const ShearLoadResult r = run_shear_load(c, sample, loads[k], load_progress);
+    const ShearLoadResult r = run_shear_load(c, sample, loads[k], load_progress, c.output.snapshot_interval);
     nlohmann::json s = load_summary(c, sample, r, opt.threads, /*series=*/true);
     OutputStaging load_out(load_dirs[k], true);
     write_load(load_out, c, r, s);

@@ -36,6 +36,13 @@ constexpr double kMaxShearToNormal = 1.5;
 // stiffer; walls ten times softer than the seeds are a wall stiffness in kN/m.
 constexpr double kMinWallToParticle = 0.1;
 
+// Least output.snapshot_interval (s) that keeps a test's snapshots to a few thousand: the
+// paper's tests last 2.4 s (oedometer loading) to ~7 s (a shear load), and a snapshot holds
+// ~125 bytes a sphere (io/snapshot.hpp: 14 four-byte values, and 29 bytes for each of its
+// ~2.4 contacts in the paper's oedometer), all kept in memory until the result is written.
+// Below it, likely milliseconds taken for seconds.
+constexpr double kMinSnapshotInterval = 1e-3;
+
 using Found = std::vector<ImplausibleSetting>;
 
 void add(Found& w, const RunConfig& c, const std::string& key, const std::string& reason) {
@@ -142,6 +149,12 @@ std::vector<ImplausibleSetting> implausible_settings(const RunConfig& c, Scenari
                 " kg/m^3 of seeds: densities are in kg/m^3 (1.25 g/cm^3 is 1250). A deliberate mass scaling "
                 "is fine if the test stays quasi-static");
   check_gravity(c, w);
+  if (c.output.snapshot_interval > 0.0 && c.output.snapshot_interval < kMinSnapshotInterval)
+    add(w, c, "output.snapshot_interval",
+        format_shortest(c.output.snapshot_interval) + " s gives more than " +
+            format_shortest(1.0 / kMinSnapshotInterval) + " snapshots per simulated second, each held in memory "
+            "until the run ends (~125 bytes a sphere): intervals are in seconds of simulated time (the default is " +
+            format_shortest(default_snapshot_interval(scenario)) + " s)");
   if (scenario == Scenario::kRepose) {
     check_speed(c, "repose.lift_speed", c.repose.lift_speed, "5 mm/s is 0.005", w);
     return w;

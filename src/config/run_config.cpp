@@ -26,6 +26,16 @@ const char* to_string(Scenario s) {
   return "?";
 }
 
+double default_snapshot_interval(Scenario s) {
+  switch (s) {
+    case Scenario::kOedometer: return 0.05;
+    case Scenario::kShear: return 0.2;
+    case Scenario::kRepose: return 0.5;
+    case Scenario::kScene: return 0.0;
+  }
+  return 0.0;
+}
+
 const char* to_string(BoxEdgeContacts e) {
   return e == BoxEdgeContacts::kPerWall ? "per_wall" : "per_surface";
 }
@@ -321,6 +331,16 @@ SceneSpec read_scene(const ConfigNode& t, const ConfigReader& reader) {
   return s;
 }
 
+// [output]. A key left out takes the scenario's default without being recorded in the
+// resolved config (OutputSpec): the run's fingerprint stays that of its physics.
+OutputSpec read_output(const ConfigNode& t, Scenario scenario) {
+  OutputSpec o;
+  o.snapshot_interval = t.has("snapshot_interval") ? t.non_negative("snapshot_interval", 0.0)
+                                                   : default_snapshot_interval(scenario);
+  if (t.has("plots")) o.plots = t.boolean("plots", true);
+  return o;
+}
+
 }  // namespace
 
 RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
@@ -380,6 +400,7 @@ RunConfig read_run_config(Scenario scenario, const ConfigReader& reader) {
     if (c.integration.automatic_time_step && !root.table("integration").has("time_step"))
       root.table("integration").fail("time_step", "a scene needs a fixed time step (s) or \"auto\" stated explicitly");
   }
+  c.output = read_output(root.table("output"), scenario);
   reader.reject_unknown_keys();
   const bool settles = (scenario == Scenario::kOedometer && c.oedometer.packing_file.empty()) ||
                        (scenario == Scenario::kShear && c.shear_box.packing_file.empty()) ||

@@ -127,6 +127,18 @@ struct SceneSpec {                    // [scene]
   std::vector<std::int64_t> record_particles;  // indices; empty = none
 };
 
+// [output]: what a `colza run` writes beside its results. Not part of the physics: a key
+// left out is not written into the resolved config (RunConfig::resolved_toml), so the
+// run's fingerprint (calibration run reuse) is that of its physics alone.
+struct OutputSpec {
+  // Simulated seconds between particle snapshots in result.h5 (and result.xmf), counted from
+  // the start of the test (the oedometer's loading, the shear box's consolidation of each
+  // load, the angle of repose's lift, the scene's first step); 0 = none. Default per
+  // scenario: default_snapshot_interval.
+  double snapshot_interval = 0.0;
+  // output.plots: draw the result's plots into DIR/plots/ after the run (cli/plot_command.hpp).
+  bool plots = true;
+};
 struct RunConfig {
   std::string source;                 // file name (or built-in defaults)
   std::vector<std::string> overrides; // --set key=value (and --seed as seed=N), in order
@@ -150,10 +162,16 @@ struct RunConfig {
   ShearBoxSpec shear_box;
   ReposeSpec repose;
   SceneSpec scene;
+  OutputSpec output;
 };
 
 enum class Scenario { kOedometer, kShear, kScene, kRepose };
 const char* to_string(Scenario s);
+
+// Defaults of output.snapshot_interval (s): a few dozen snapshots of each test (the
+// oedometer loads for ~1-2 s, the shear box consolidates and shears for ~6-7 s, the angle of
+// repose's cylinder is lifted for ~11 s); none for a scene (set it to have them).
+double default_snapshot_interval(Scenario s);
 
 // Reads and validates everything the scenario needs, then rejects unknown keys.
 // `config_path` empty = built-in defaults. Throws ConfigError.

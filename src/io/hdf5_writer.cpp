@@ -2,25 +2,19 @@
 
 #include <H5Cpp.h>
 
+#include "io/hdf5_internal.hpp"
+
 #include "core/version.hpp"
 
 namespace colza {
 
-template <class Body>
-void Hdf5Writer::translating_errors(Body&& body) {
-  try {
-    body();
-  } catch (const H5::Exception& e) {
-    throw Hdf5WriteError("cannot write " + name_ + ": HDF5: " + e.getFuncName() + ": " + e.getDetailMsg());
-  }
-}
-
-Hdf5Writer::Hdf5Writer(const std::string& file) : name_(file) {
+Hdf5Writer::Hdf5Writer(const std::string& file, bool many_chunked) : name_(file) {
   translating_errors([&] {
-    // Format of HDF5 1.8 or later: dense attribute storage (attributes over 64 KiB). Its
-    // root group's header would carry times; the file creation list sets them off.
+    // Format of HDF5 1.8 or later: dense attribute storage (attributes over 64 KiB); 1.10's
+    // with snapshots (`many_chunked`). Its root group's header would carry times; the file
+    // creation list sets them off.
     H5::FileAccPropList access;
-    access.setLibverBounds(H5F_LIBVER_V18, H5F_LIBVER_LATEST);
+    access.setLibverBounds(many_chunked ? H5F_LIBVER_V110 : H5F_LIBVER_V18, H5F_LIBVER_LATEST);
     H5::FileCreatPropList creation;
     if (H5Pset_obj_track_times(creation.getId(), false) < 0)
       throw H5::PropListIException("H5Pset_obj_track_times", "failed on the file creation list");
@@ -61,37 +55,8 @@ void Hdf5Writer::attribute(const std::string& name, std::int64_t value) {
 
 namespace {
 
-// Object creation properties without modification times: HDF5 stamps every group and dataset
-// header with its creation time by default, so two runs with the same results would write
-// different bytes (H5Pset_obj_track_times).
-H5::DSetCreatPropList untimed_dataset() {
-  H5::DSetCreatPropList p;
-  if (H5Pset_obj_track_times(p.getId(), false) < 0) throw H5::PropListIException("H5Pset_obj_track_times", "failed");
-  return p;
-}
-
-void create_untimed_group(H5::H5File& file, const std::string& path) {
-  const hid_t gcpl = H5Pcreate(H5P_GROUP_CREATE);
-  const bool ok = gcpl >= 0 && H5Pset_obj_track_times(gcpl, false) >= 0;
-  const hid_t g = ok ? H5Gcreate2(file.getId(), path.c_str(), H5P_DEFAULT, gcpl, H5P_DEFAULT) : -1;
-  if (gcpl >= 0) H5Pclose(gcpl);
-  if (g < 0) throw H5::GroupIException("H5Gcreate2", "cannot create group " + path);
-  H5Gclose(g);
-}
-
-H5::Group ensure_group(H5::H5File& file, const std::string& path) {
-  std::string partial;
-  std::size_t start = 0;
-  while (start < path.size()) {
-    const auto slash = path.find('/', start);
-    partial += '/';
-    partial.append(path, start, slash == std::string::npos ? std::string::npos : slash - start);
-    if (!file.nameExists(partial)) create_untimed_group(file, partial);
-    if (slash == std::string::npos) break;
-    start = slash + 1;
-  }
-  return file.openGroup(partial);
-}
+using hdf5_detail::ensure_group;
+using hdf5_detail::untimed_dataset;
 
 // A dataset of doubles with its unit as the string attribute "units" (none if `unit` is empty).
 void write_doubles(H5::Group& g, const std::string& name, const double* data, hsize_t rows, hsize_t cols,

@@ -62,9 +62,11 @@ void sync_to_disk(const fs::path& path) {
   ::close(fd);
 }
 
-// The files a run writes into --out (a series also writes load-<N>Pa folders).
+// The files a run writes into --out (a series also writes load-<N>Pa folders; every run the
+// folder kPlotsFolder).
 constexpr const char* kRunFiles[] = {"summary.json", "sample.json", "packing.txt", "curve.csv", "series.csv",
-                                     "result.h5"};
+                                     "result.h5", "result.xmf"};
+constexpr const char* kPlotsFolder = "plots";
 
 // check_output_dir without the command's part: OutputStaging's check, for folders whose
 // command is settled (the caller checked --out; design runs and series loads are colza's own).
@@ -126,6 +128,7 @@ std::vector<std::string> earlier_run_outputs(const fs::path& dir) {
     return names;
   for (const char* f : kRunFiles)
     if (fs::exists(dir / f, ec)) names.push_back(f);
+  if (fs::is_directory(dir / kPlotsFolder, ec)) names.push_back(kPlotsFolder);
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string f = it->path().filename().string();
     if (is_load_label(f) && fs::is_directory(it->path(), ec) &&

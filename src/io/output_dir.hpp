@@ -59,7 +59,7 @@ void check_output_dir(const std::filesystem::path& dir, bool overwrite, const st
                       const std::string& unfinished_marker = "");
 
 // The entries of an earlier `colza run` result in dir: its summary.json and sample.json,
-// packing.txt, curve.csv, series.csv, result.h5 and load-<sigma>Pa folders holding a
+// packing.txt, curve.csv, series.csv, result.h5, result.xmf, plots/ and load-<sigma>Pa folders holding a
 // summary.json, but only if dir's summary.json or sample.json is colza's (it names
 // colza_version or config_fingerprint); none otherwise. For OutputStaging::commit when
 // --force replaces the result.

@@ -6,6 +6,7 @@
 #include "scenario/bonds.hpp"
 #include "scenario/generation.hpp"
 #include "scenario/sample_preparation.hpp"
+#include "scenario/snapshot_recorder.hpp"
 #include "scenario/wall_load.hpp"
 
 namespace colza {
@@ -60,7 +61,7 @@ double total_mass(const ParticleArrays& p) {
 
 }  // namespace
 
-OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
+OedometerResult run_oedometer(const RunConfig& c, Progress& progress, double snapshot_interval) {
   OedometerResult r;
   const OedometerSpec& o = c.oedometer;
   World world;
@@ -108,6 +109,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
   StageClock load_clock("loading");
   progress.start_stage("loading");
   const double t_start = world.time;
+  SnapshotRecorder snapshots(snapshot_interval, t_start);
   r.dt_min = r.dt_max = world.dt;
   bool stop = false;
   std::uint64_t load_steps = 0;
@@ -152,6 +154,7 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
       }
     });
     ++load_steps;
+    snapshots.observe(world);
     if (turn && !stop) {  // reverse: the next branch heads for the next target
       ++branch;
       world.walls[piston_id].velocity = Vec3(0.0, 0.0, branch % 2 == 0 ? -o.piston_speed : o.piston_speed);
@@ -161,6 +164,8 @@ OedometerResult run_oedometer(const RunConfig& c, Progress& progress) {
     r.dt_max = std::max(r.dt_max, world.dt);
   }
   stepper.require_sound_state(world);  // a blow-up within the last check interval, too
+  snapshots.record(world);
+  r.snapshots = snapshots.take();
   progress.end_stage();
   load_clock.count_steps(load_steps, world.particles.size());
   r.stages.push_back(load_clock.finish());

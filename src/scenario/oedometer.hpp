@@ -10,6 +10,7 @@
 #include "config/run_config.hpp"
 #include "core/stage_timing.hpp"
 #include "io/progress.hpp"
+#include "io/snapshot.hpp"
 #include "io/table.hpp"
 #include "scenario/settling.hpp"
 
@@ -37,6 +38,7 @@ struct OedometerResult {
   ParticleArrays settled;             // packing after discarding (loading starts from it)
   ParticleArrays final_state;
   std::uint64_t bonds_broken_tension = 0, bonds_broken_shear = 0;
+  SnapshotSeries snapshots;           // of the loading (none unless a snapshot interval was given)
 };
 
 // The curve of a load-unload run: the single loading's columns, then radial_force (N, the
@@ -51,7 +53,8 @@ Table cycle_curve_columns();
 CycleAnalysisSettings simulated_cycle_settings(const OedometerCycleSpec& cycles);
 
 // Throws ConfigError when the configuration cannot make the sample (e.g. too many spheres).
-OedometerResult run_oedometer(const RunConfig& config, Progress& progress);
+// `snapshot_interval` (s; 0 = none): particle snapshots of the loading (scenario/snapshot_recorder.hpp).
+OedometerResult run_oedometer(const RunConfig& config, Progress& progress, double snapshot_interval = 0.0);
 
 // The container: the floor (plane z = 0, facing up) and the envelope (cylinder of diameter
 // cylinder_diameter from z = 0 up through the generation volume).

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "scenario/sample_preparation.hpp"
+#include "scenario/snapshot_recorder.hpp"
 
 namespace colza {
 
@@ -36,7 +37,7 @@ HeapFitSettings repose_fit_settings(const ReposeSpec& r) {
   return s;
 }
 
-ReposeResult run_repose(const RunConfig& c, Progress& progress) {
+ReposeResult run_repose(const RunConfig& c, Progress& progress, double snapshot_interval) {
   const ReposeSpec& rs = c.repose;
   ReposeResult r;
 
@@ -80,12 +81,14 @@ ReposeResult run_repose(const RunConfig& c, Progress& progress) {
   stepper.set_integration_sums({.unbalanced = false, .damping_work = false});
   stepper.set_between_halves(Stepper::BetweenHalves::kWallsOnly);
   const double t0 = world.time;
+  SnapshotRecorder snapshots(snapshot_interval, t0);
   std::uint64_t lift_steps = 0;
   // Lifted until the cylinder's lower end clears the highest sphere by a diameter (checked
   // every 100 steps; a sphere can only fall, so the column's top only sinks).
   while (true) {
     stepper.step(world);
     ++lift_steps;
+    snapshots.observe(world);
     if (lift_steps % 100 != 0) continue;
     const double bottom = world.walls[cylinder].origin.z();
     const double top = highest_top(world.particles);
@@ -110,6 +113,8 @@ ReposeResult run_repose(const RunConfig& c, Progress& progress) {
   r.stages.push_back(rest_clock.finish());
   r.steps = lift_steps + r.rest.steps;
   r.dt = world.dt;
+  snapshots.record(world);  // the heap at rest
+  r.snapshots = snapshots.take();
 
   const ParticleArrays& p = world.particles;
   std::vector<double> x(p.size()), y(p.size()), z(p.size()), radius(p.size());

@@ -11,6 +11,7 @@
 #include "config/run_config.hpp"
 #include "core/stage_timing.hpp"
 #include "io/progress.hpp"
+#include "io/snapshot.hpp"
 #include "scenario/settling.hpp"
 
 namespace colza {
@@ -30,9 +31,12 @@ struct ReposeResult {
   std::vector<StageTiming> stages;
   ParticleArrays column;               // the settled column at rest (packing.txt)
   ParticleArrays final_state;          // the heap
+  SnapshotSeries snapshots;            // the lift, and the heap at rest (none unless an interval was given)
 };
 
-ReposeResult run_repose(const RunConfig& config, Progress& progress);
+// `snapshot_interval` (s; 0 = none): particle snapshots of the lift from its start, and the
+// heap at rest at the end (scenario/snapshot_recorder.hpp).
+ReposeResult run_repose(const RunConfig& config, Progress& progress, double snapshot_interval = 0.0);
 
 // The cone-fit settings of the config (sectors, fit range; the heap's axis is the cylinder's).
 HeapFitSettings repose_fit_settings(const ReposeSpec& r);

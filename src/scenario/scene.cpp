@@ -5,6 +5,7 @@
 #include "engine/energy.hpp"
 #include "engine/stepper.hpp"
 #include "scenario/bonds.hpp"
+#include "scenario/snapshot_recorder.hpp"
 
 namespace colza {
 
@@ -39,7 +40,7 @@ Table scene_table(const std::vector<std::int64_t>& particles, std::size_t walls,
   return Table(std::move(names), std::move(units));
 }
 
-SceneResult run_scene(const RunConfig& c, Progress& progress) {
+SceneResult run_scene(const RunConfig& c, Progress& progress, double snapshot_interval) {
   SceneResult r;
   const SceneSpec& s = c.scene;
   Stepper stepper(make_physics(c));
@@ -58,6 +59,7 @@ SceneResult run_scene(const RunConfig& c, Progress& progress) {
   progress.start_stage("scene");
   const std::uint64_t total = static_cast<std::uint64_t>(s.steps);
   std::vector<double> row;
+  SnapshotRecorder snapshots(snapshot_interval, world.time);
   std::uint64_t n = 0;
   bool last = false;
   for (; !last; ++n) {
@@ -85,9 +87,12 @@ SceneResult run_scene(const RunConfig& c, Progress& progress) {
       row.insert(row.end(), energies.begin(), energies.end());
       r.series.add_row(row);
     });
+    snapshots.observe(world);
     if (n % 1000 == 0) progress.update(static_cast<double>(n) / total, "");
   }
   stepper.require_sound_state(world);  // a blow-up within the last check interval, too
+  snapshots.record(world);
+  r.snapshots = snapshots.take();
   progress.end_stage();
   clock.count_steps(n, world.particles.size());
   r.stages.push_back(clock.finish());

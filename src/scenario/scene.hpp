@@ -7,6 +7,7 @@
 #include "config/run_config.hpp"
 #include "core/stage_timing.hpp"
 #include "io/progress.hpp"
+#include "io/snapshot.hpp"
 #include "io/table.hpp"
 
 namespace colza {
@@ -19,6 +20,7 @@ struct SceneResult {
   double dt = 0.0;
   std::size_t bonds_installed = 0;
   ParticleArrays final_state;
+  SnapshotSeries snapshots;  // none unless a snapshot interval was given
 };
 
 // The empty series (column names and units) for the given recorded particles and wall
@@ -29,6 +31,7 @@ struct SceneResult {
 // energy_columns: the paper's law has nine, a mechanism adds its own after wall_work).
 Table scene_table(const std::vector<std::int64_t>& particles, std::size_t walls, const ContactModel& model);
 
-SceneResult run_scene(const RunConfig& config, Progress& progress);
+// `snapshot_interval` (s; 0 = none): particle snapshots (scenario/snapshot_recorder.hpp).
+SceneResult run_scene(const RunConfig& config, Progress& progress, double snapshot_interval = 0.0);
 
 }  // namespace colza

@@ -12,6 +12,7 @@
 #include "scenario/bonds.hpp"
 #include "scenario/generation.hpp"
 #include "scenario/sample_preparation.hpp"
+#include "scenario/snapshot_recorder.hpp"
 #include "scenario/plate_servo.hpp"
 
 namespace colza {
@@ -144,7 +145,7 @@ std::size_t count_outside(const World& w, const ShearBoxSpec& b, double offset, 
 }  // namespace
 
 ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, double normal_stress,
-                               Progress& progress) {
+                               Progress& progress, double snapshot_interval) {
   ShearLoadResult r;
   const ShearBoxSpec& b = c.shear_box;
   const double area = b.length * b.width;  // nominal area (paper: 0.04 m^2)
@@ -177,6 +178,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
   StageClock consolidation_clock("consolidation");
   progress.start_stage("consolidation");
   const double t0 = world.time;
+  SnapshotRecorder snapshots(snapshot_interval, t0);
   std::uint64_t steps = 0;
   // Holds `stress` (Pa) until the plate force is within the tolerance and the plate still for
   // the consolidation window; false when consolidation_max_time (from this call) runs out.
@@ -200,6 +202,7 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
       }
       stepper.finish_step(world);
       ++steps;
+      snapshots.observe(world);
       if (held_since >= 0.0 && world.time - held_since >= b.consolidation_window) return true;
       if (world.time - start >= b.consolidation_max_time) return false;
     }
@@ -252,8 +255,11 @@ ShearLoadResult run_shear_load(const RunConfig& c, const ShearSample& sample, do
     }
     stepper.finish_step(world);
     ++shear_steps;
+    snapshots.observe(world);
   }
   stepper.require_sound_state(world);  // a blow-up within the last check interval, too
+  snapshots.record(world);
+  r.snapshots = snapshots.take();
   progress.end_stage();
   shear_clock.count_steps(shear_steps, world.particles.size());
   r.stages.push_back(shear_clock.finish());

@@ -8,6 +8,7 @@
 #include "config/run_config.hpp"
 #include "core/stage_timing.hpp"
 #include "io/progress.hpp"
+#include "io/snapshot.hpp"
 #include "io/table.hpp"
 #include "scenario/settling.hpp"
 
@@ -65,9 +66,12 @@ struct ShearLoadResult {
   std::vector<StageTiming> stages;
   ParticleArrays final_state;
   std::uint64_t bonds_broken_tension = 0, bonds_broken_shear = 0;
+  SnapshotSeries snapshots;            // consolidation and shearing (none unless an interval was given)
 };
 
+// `snapshot_interval` (s; 0 = none): particle snapshots from the start of the consolidation
+// (scenario/snapshot_recorder.hpp).
 ShearLoadResult run_shear_load(const RunConfig& config, const ShearSample& sample, double normal_stress,
-                               Progress& progress);
+                               Progress& progress, double snapshot_interval = 0.0);
 
 }  // namespace colza
