@@ -144,6 +144,16 @@ Eigen::MatrixXd plane_slopes(const std::vector<calibration::Run>& runs, const st
   return J;
 }
 
+// The parameters' standard deviations under the noise, to first order about the fit:
+// sqrt(diag((A^T Sigma^-1 A)^-1)), A the features' sensitivities (Gauss-Newton). The
+// calibration's own are drawn from planes through its last, crowded runs, whose slopes show
+// the runs' scatter as much as the response; these carry the noise the residuals are judged by.
+Eigen::VectorXd sigma_under_noise(const NoiseModel& noise, const Eigen::MatrixXd& A) {
+  const Eigen::MatrixXd W = noise.whiten(A);
+  const Eigen::MatrixXd information = W.transpose() * W;
+  return information.completeOrthogonalDecomposition().pseudoInverse().diagonal().cwiseMax(0.0).cwiseSqrt();
+}
+
 // Step 1: the baseline calibrated and judged.
 Fit fit_baseline(const DiagnosisProblem& p, CountingModel& model) {
   const std::size_t np = p.parameters.size();
@@ -272,6 +282,7 @@ ExtendedFit extend(const DiagnosisProblem& p, CountingModel& model, const Diagno
   Fit common = e.fit;
   judge_refit(p, common, A, lo, hi, d.baseline.noise);
   judge_refit(p, e.fit, A, lo, hi, e.fit.noise);
+  e.fit.sigma = sigma_under_noise(e.fit.noise, A);
   e.chi_square_common = common.adequacy.chi_square;
   e.likelihood_ratio_p = boundary_likelihood_ratio_p(d.baseline.adequacy.chi_square, e.chi_square_common);
   e.bic = bayesian_information_criterion(e.chi_square_common, static_cast<int>(np + 1),
@@ -353,6 +364,7 @@ DiagnosisResult diagnose(const DiagnosisProblem& p, const DiagnosisForward& forw
   d.baseline_sensitivity = measure_sensitivities(p, model, d.baseline);
   const calibration::Problem bounds = calibration_problem(p, p.parameters, measured_sd(p), {});
   judge_refit(p, d.baseline, d.baseline_sensitivity, bounds.lower(), bounds.upper(), d.baseline.noise);
+  d.baseline.sigma = sigma_under_noise(d.baseline.noise, d.baseline_sensitivity);
   const int nf = static_cast<int>(p.features.size()), np = static_cast<int>(p.parameters.size());
   d.baseline_bic = bayesian_information_criterion(d.baseline.adequacy.chi_square, np, nf);
   if (p.settings.replicates < 8)

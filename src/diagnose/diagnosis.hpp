@@ -79,7 +79,7 @@ struct DiagnosisProblem {
 struct Fit {
   std::string model;              // "baseline" or the candidate's name
   Eigen::VectorXd parameters;     // the baseline's, then the candidate's strength when extended
-  Eigen::VectorXd sigma;          // first-order standard deviation of each (calibrate.hpp)
+  Eigen::VectorXd sigma;          // standard deviation of each under the noise, Gauss-Newton about the fit
   Eigen::VectorXd mean_features;  // over realisations 1..R at the fit
   std::vector<Eigen::VectorXd> realisation_features;  // realisations 1..R at the fit
   NoiseModel noise;
