@@ -27,6 +27,12 @@ void add_if_available(Features& f, const std::string& name, double value) {
 
 }  // namespace
 
+std::string feature_names(const Features& f) {
+  std::string s;
+  for (const auto& [name, value] : f) s += (s.empty() ? "" : ", ") + name;
+  return s;
+}
+
 std::string load_feature_name(double sigma, const std::string& feature) { return load_label(sigma) + "/" + feature; }
 
 Features output_features(const nlohmann::json& outputs) {

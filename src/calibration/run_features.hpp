@@ -18,6 +18,9 @@ namespace colza::calibration {
 // Feature name -> value (SI units of the output it comes from).
 using Features = std::map<std::string, double>;
 
+// The features' names, ", "-separated (for a message naming what a run or a curve gives).
+std::string feature_names(const Features& f);
+
 // "<load label>/<feature>": a shear series' feature at normal stress sigma (Pa).
 std::string load_feature_name(double sigma, const std::string& feature);
 

@@ -61,10 +61,8 @@ Eigen::VectorXd DemForward::operator()(const ModelPoint& x, int realisation) {
     for (const Feature& feature : test.features) {
       const auto it = f.find(feature.name);
       if (it == f.end()) {
-        std::string known;
-        for (const auto& [name, value] : f) known += (known.empty() ? "" : ", ") + name;
-        throw calibration::CalibrationError(
-            "tests", "test " + test.name + ": run " + run.id + " has no feature " + feature.name + " (it has: " + known + ")");
+        throw calibration::CalibrationError("tests", "test " + test.name + ": run " + run.id + " has no feature " +
+                                                         feature.name + " (it has: " + calibration::feature_names(f) + ")");
       }
       values.push_back(it->second);
     }

@@ -170,7 +170,6 @@ Fit fit_baseline(const DiagnosisProblem& p, CountingModel& model) {
       [&](const Eigen::VectorXd& x) { return model(ModelPoint{x}, 0); }, opt);
   Fit f = realise_fit(p, model, "baseline", ModelPoint{r.solution});
   f.parameters = r.solution;
-  f.sigma = r.sigma;
   f.calibration_runs = static_cast<int>(r.forward_runs());
   f.design_sensitivity = plane_slopes(r.runs, p.parameters);
   return f;
@@ -272,7 +271,6 @@ ExtendedFit extend(const DiagnosisProblem& p, CountingModel& model, const Diagno
   e.candidate = k;
   e.fit = realise_fit(p, model, c.name, point(r.solution));
   e.fit.parameters = r.solution;
-  e.fit.sigma = r.sigma;
   e.fit.calibration_runs = static_cast<int>(r.forward_runs());
   e.fit.strength_at_upper_bound = r.solution[static_cast<Eigen::Index>(np)] >= c.parameter.upper - 1e-3 * range;
   Eigen::MatrixXd A(d.baseline_sensitivity.rows(), d.baseline_sensitivity.cols() + 1);

@@ -94,12 +94,6 @@ calibration::Features measured_curve_features(const ConfigNode& t, const std::st
   return out;
 }
 
-std::string names_of(const calibration::Features& f) {
-  std::string s;
-  for (const auto& [name, value] : f) s += (s.empty() ? "" : ", ") + name;
-  return s;
-}
-
 DiagnosisTest read_test(const ConfigNode& t, const std::string& spec_file, std::set<std::string>& names) {
   DiagnosisTest test;
   test.name = required_string(t, "name", "the test's name, e.g. \"oedometer\"");
@@ -123,7 +117,7 @@ DiagnosisTest read_test(const ConfigNode& t, const std::string& spec_file, std::
     if (from_curve == from_curves.end())
       f.require("value", from_curves.empty() ? "the measured value, SI units"
                                               : "the measured value, SI units: the test's measured curves give no " +
-                                                    feature.name + "; they give " + names_of(from_curves));
+                                                    feature.name + "; they give " + calibration::feature_names(from_curves));
     f.require("uncertainty", "the measured value's standard uncertainty, SI units");
     feature.measured = f.has("value") ? f.number("value", 0.0) : from_curve->second;
     feature.uncertainty = f.positive("uncertainty", 0.0);
