@@ -100,6 +100,8 @@ struct ExtendedFit {
   double chi_square_common = 0.0;  // under the baseline's noise, for the comparisons
   double likelihood_ratio_p = 1.0; // against the baseline (model_comparison.hpp)
   double bic = 0.0;                // under the baseline's noise
+  Eigen::VectorXd start;           // where the kept search started (baseline parameters, then strength)
+  int searches = 1;                // 2: the first search ended inadequate and a second began at the joint linearised fit
 };
 
 struct HeldOutPrediction {

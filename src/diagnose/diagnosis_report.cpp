@@ -107,6 +107,8 @@ nlohmann::json diagnosis_summary(const DiagnosisProblem& p, const DiagnosisResul
     f["chi_square_under_baseline_noise"] = e.chi_square_common;
     f["likelihood_ratio_p"] = e.likelihood_ratio_p;
     f["bic"] = e.bic;
+    f["searches"] = e.searches;
+    f["search_start"] = vec(e.start);
     ext.push_back(f);
   }
   j["extended"] = ext;
@@ -190,6 +192,11 @@ std::string diagnosis_report(const DiagnosisProblem& p, const DiagnosisResult& d
         << (e.fit.strength_at_upper_bound ? " (at its physical top)" : "") << " |\n";
     }
     o << "\n";
+    for (const ExtendedFit& e : d.extended)
+      if (e.searches > 1)
+        o << p.candidates[static_cast<std::size_t>(e.candidate)].name
+          << ": the search from the baseline's fit ended at a fit the adequacy test rejects; a second search began at "
+             "the joint linearised fit and the better of the two is shown (" << e.fit.calibration_runs << " runs in all).\n\n";
   }
   if (!d.extended.empty()) {
     o << "## 4. The gain\n\nMisfit per feature, noise units, before and after:\n\n| feature | baseline z |";

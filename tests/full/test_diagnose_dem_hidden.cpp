@@ -39,7 +39,7 @@ std::string verdict_of(const nlohmann::json& s) { return s["verdict"]["kind"].ge
 TEST(DiagnoseDemHidden, ElastoPlasticContactIsNamed) {
   const ScratchDir dir;
   for (int seed : data_seeds({1, 2, 3})) {
-    const nlohmann::json s = run_case(dir, "plastic", {"elasto_plastic", 2.2, {}}, seed);
+    const nlohmann::json s = run_case(dir, "plastic", {"elasto_plastic", 1.7, {}}, seed);
     EXPECT_EQ(verdict_of(s), "explained") << "seed " << seed << ": " << s["verdict"]["text"];
     EXPECT_EQ(s["verdict"]["cause"], "elasto_plastic") << "seed " << seed;
   }
@@ -48,7 +48,7 @@ TEST(DiagnoseDemHidden, ElastoPlasticContactIsNamed) {
 TEST(DiagnoseDemHidden, RollingResistanceIsNamedOrAmbiguousWithCohesion) {
   const ScratchDir dir;
   for (int seed : data_seeds({1, 2, 3})) {
-    const nlohmann::json s = run_case(dir, "rolling", {"rolling_resistance", 0.15, {}}, seed);
+    const nlohmann::json s = run_case(dir, "rolling", {"rolling_resistance", 0.18, {}}, seed);
     const std::string v = verdict_of(s);
     EXPECT_TRUE(v == "explained" || v == "ambiguous") << "seed " << seed << ": " << s["verdict"]["text"];
     // Explained by rolling resistance, or ambiguous with rolling resistance one of the two.
@@ -61,7 +61,7 @@ TEST(DiagnoseDemHidden, RollingResistanceIsNamedOrAmbiguousWithCohesion) {
 TEST(DiagnoseDemHidden, LoadInducedCohesionIsNamed) {
   const ScratchDir dir;
   for (int seed : data_seeds({1, 2, 3})) {
-    const nlohmann::json s = run_case(dir, "cohesion", {"load_induced_cohesion", 0.8, {}}, seed);
+    const nlohmann::json s = run_case(dir, "cohesion", {"load_induced_cohesion", 0.45, {}}, seed);
     EXPECT_EQ(verdict_of(s), "explained") << "seed " << seed << ": " << s["verdict"]["text"];
     EXPECT_EQ(s["verdict"]["cause"], "load_induced_cohesion") << "seed " << seed;
   }
