@@ -65,6 +65,7 @@ nlohmann::json run_oedometer_outputs(const RunConfig& c, const fs::path& dir, do
   const OedometerResult r = run_oedometer(c, quiet);
   wall = seconds_since(t0);
   nlohmann::json out = {{"bulk_density", r.bulk_density},
+                        {"packing_height", r.packing_height},
                         {"particles", r.particles},
                         {"settling_converged", r.settling.converged},
                         {"max_force", r.max_force},

@@ -99,6 +99,19 @@ Features shear_curve_features_of(const fs::path& dir, const std::vector<double>&
   return f;
 }
 
+Features run_features_of(const nlohmann::json& outputs, const fs::path& run_dir, Scenario scenario,
+                         const RunConfig& config) {
+  Features f = output_features(outputs);
+  if (scenario == Scenario::kShear) {
+    ShearCurveSettings settings;
+    settings.window = {config.shear_box.strength_window_start, config.shear_box.strength_window_end};
+    const Features curves =
+        shear_curve_features_of(run_dir, config.shear_box.normal_stresses, settings, config.shear_box.length);
+    f.insert(curves.begin(), curves.end());
+  }
+  return f;
+}
+
 Features load_unload_features(const LoadUnloadAnalysis& a) {
   Features f;
   for (std::size_t k = 0; k < a.cycles.size(); ++k) {

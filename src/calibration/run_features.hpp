@@ -12,6 +12,7 @@
 #include "analysis/oedometer_cycles.hpp"
 #include "analysis/shear_curve_features.hpp"
 #include "calibration/measured_shear_curve.hpp"
+#include "config/run_config.hpp"
 
 namespace colza::calibration {
 
@@ -49,6 +50,12 @@ void add_shear_curve_features(const ShearCurveFeatures& curve, const std::string
 // dilatancy_angle_deg and initial_stiffness (a feature that is not available is left out).
 Features shear_curve_features_of(const std::filesystem::path& run_dir, const std::vector<double>& loads,
                                  const ShearCurveSettings& settings, double box_length);
+
+// Every feature of a finished run of `config` (run_cache.hpp) kept in `run_dir`: its outputs'
+// numbers (output_features) and, for a shear series, each load's whole-curve features over
+// the config's strength window (shear_curve_features_of).
+Features run_features_of(const nlohmann::json& outputs, const std::filesystem::path& run_dir, Scenario scenario,
+                         const RunConfig& config);
 
 // A load-unload curve's features (analysis/oedometer_cycles.hpp), numbered from 1 in time
 // order: per cycle "cycle<k>/loop_area" (J/m^3), "/strain_at_turn", "/permanent_strain",

@@ -112,7 +112,12 @@ int main(int argc, char** argv) {
   run->add_flag("--force", opt.force, "replace an earlier result in --out (only once the new run has succeeded)");
   run->add_option("--normal-stress", opt.normal_stress, "shear: normal stress held by the plate (Pa)")
       ->check(positive_finite());
-  run->add_option("--jobs", opt.jobs, "shear-series: loads run concurrently")->check(at_least_one());
+  run->add_option("--jobs", opt.jobs, "shear-series: loads run concurrently; with --speeds: speeds run concurrently")
+      ->check(at_least_one());
+  run->add_option("--speeds", opt.speeds,
+                  "oedometer, shear-series, repose: run the same sample at each of these speeds (m/s, comma-separated: "
+                  "the piston, shear or lift speed) and report how every feature moves with speed")
+      ->delimiter(',');
   run->add_flag("--quiet", opt.quiet, "no progress display");
 
   colza::CalibrateOptions cal;
@@ -198,8 +203,8 @@ int main(int argc, char** argv) {
   if (run->parsed() && run->count("--normal-stress") > 0 && opt.scenario != "shear")
     return inapplicable("--normal-stress",
                         "only `colza run shear` does (a series takes its loads from shear_box.normal_stresses)");
-  if (run->parsed() && run->count("--jobs") > 0 && opt.scenario != "shear-series")
-    return inapplicable("--jobs", "only `colza run shear-series` does (use --threads for one run)");
+  if (run->parsed() && run->count("--jobs") > 0 && opt.scenario != "shear-series" && opt.speeds.empty())
+    return inapplicable("--jobs", "only `colza run shear-series` and a speed series (--speeds) do (use --threads for one run)");
   if (opt.threads == 0) opt.threads = default_worker_threads(opt.jobs);
   if (cal.threads == 0) cal.threads = default_worker_threads(cal.jobs);
   if (diag.threads == 0) diag.threads = default_worker_threads(diag.jobs);

@@ -8,6 +8,7 @@
 #include "io/format_number.hpp"
 #include "io/lab_features_json.hpp"
 #include "io/packing_file.hpp"
+#include "io/scenario_inertial_numbers.hpp"
 #include "io/summary.hpp"
 #include "scenario/repose.hpp"
 
@@ -51,14 +52,9 @@ void run_repose_scenario(const RunConfig& c, const RunOptions& opt, OutputStagin
                           {"r2", h.r2},
                           {"sectors", rs.sectors}};
   s["spheres_beyond_heap"] = r.spheres_beyond_heap;
-  // Inertial number of the lift: gamma_dot = lift_speed / column height, p the column's mean
-  // vertical stress, rho_bulk g H / 2 (hydrostatic; the wall's friction carries some of it).
   double inertial = 0.0;
-  s["inertial_number"] = inertial_number_json(
-      {oedometer_strain_rate(rs.lift_speed, r.column_height), 0.5 * (c.particle.diameter_min + c.particle.diameter_max),
-       c.particle.density, 0.5 * r.column_bulk_density * c.integration.gravity.norm() * r.column_height,
-       "lift_speed / column_height", "the column's mean vertical stress, column_bulk_density |g| column_height / 2"},
-      inertial);
+  s["inertial_number"] =
+      inertial_number_json(repose_inertial_inputs(c, r.column_height, r.column_bulk_density), inertial);
   std::vector<std::string> warnings = settings_warnings(c, Scenario::kRepose, /*series=*/false);
   if (!r.settling.converged) warnings.push_back(settling_warning(c, r.settling));
   if (!r.rest.converged)

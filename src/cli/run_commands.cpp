@@ -4,6 +4,7 @@
 #include "cli/plot_command.hpp"
 #include "cli/repose_command.hpp"
 #include "cli/shear_commands.hpp"
+#include "cli/speed_series_command.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -18,6 +19,7 @@
 #include "io/hdf5_writer.hpp"
 #include "io/lab_features_json.hpp"
 #include "io/output_dir.hpp"
+#include "io/scenario_inertial_numbers.hpp"
 #include "io/packing_file.hpp"
 #include "io/summary.hpp"
 #include "scenario/oedometer.hpp"
@@ -26,17 +28,6 @@
 namespace colza {
 
 namespace {
-
-// The oedometer's inertial number (analysis/inertial_number.hpp) at its largest piston stress,
-// where it is smallest: gamma_dot = piston_speed / packing_height.
-nlohmann::json oedometer_inertial_number(const RunConfig& c, const OedometerResult& r, double& value) {
-  const double area = kPi * 0.25 * c.oedometer.cylinder_diameter * c.oedometer.cylinder_diameter;
-  return inertial_number_json({oedometer_strain_rate(c.oedometer.piston_speed, r.packing_height),
-                               0.5 * (c.particle.diameter_min + c.particle.diameter_max), c.particle.density,
-                               r.max_force / area, "piston_speed / packing_height",
-                               "the largest piston stress (max_force / cylinder area)"},
-                              value);
-}
 
 // What a user must not miss in an oedometer result: printed as WARNING lines and kept in
 // summary.json's "warnings".
@@ -111,7 +102,7 @@ void run_oedometer_scenario(const RunConfig& c, const RunOptions& opt, OutputSta
   }
   s["fit"] = fit;
   double inertial_number = 0.0;
-  s["inertial_number"] = oedometer_inertial_number(c, r, inertial_number);
+  s["inertial_number"] = inertial_number_json(oedometer_inertial_inputs(c, r.packing_height, r.max_force), inertial_number);
   if (c.oedometer.cycles.enabled()) {
     nlohmann::json cycles = load_unload_json(r.cycles, simulated_cycle_settings(c.oedometer.cycles));
     cycles["targets"] = c.oedometer.cycles.targets;
@@ -182,6 +173,7 @@ void run_scene_scenario(const RunConfig& c, const RunOptions& opt, OutputStaging
 }  // namespace
 
 int run_command(const RunOptions& opt) {
+  if (!opt.speeds.empty()) return speed_series_command(opt);
   const Scenario scenario = opt.scenario == "scene"       ? Scenario::kScene
                             : opt.scenario == "oedometer" ? Scenario::kOedometer
                             : opt.scenario == "repose"    ? Scenario::kRepose

@@ -6,7 +6,7 @@
 namespace colza {
 
 struct RunOptions {
-  std::string scenario;               // "oedometer" | "shear" | "shear-series" | "scene"
+  std::string scenario;               // "oedometer" | "shear" | "shear-series" | "repose" | "scene"
   std::string config_path;            // empty: built-in defaults (= data/oedometer.toml), oedometer only
   std::vector<std::string> overrides; // --set key=value
   long long seed = -1;                // --seed, -1: from the config
@@ -15,7 +15,8 @@ struct RunOptions {
   bool force = false;
   bool quiet = false;
   double normal_stress = 0.0;         // Pa, `shear` only
-  int jobs = 1;                       // concurrent loads, `shear-series` only
+  int jobs = 1;                       // concurrent loads (`shear-series`) or speeds (--speeds)
+  std::vector<double> speeds;         // m/s: a speed series (speed_series_command.hpp); empty: one run
 };
 
 // Returns the process exit code: 0 success, 2 bad input (message already printed).

@@ -21,6 +21,7 @@
 #include "io/lab_features_json.hpp"
 #include "io/load_label.hpp"
 #include "io/output_dir.hpp"
+#include "io/scenario_inertial_numbers.hpp"
 #include "io/packing_file.hpp"
 #include "io/summary.hpp"
 #include "scenario/shear_box.hpp"
@@ -47,16 +48,6 @@ std::string config_fingerprint(const RunConfig& c) {
 // summary.json's "warnings". A mean stress error past this during shearing means the servo
 // did not hold the load (the paper's speed gives ~0.2 %, ten times it ~2 %: README).
 constexpr double kHeldStressError = 0.10;
-
-// A shear load's inertial number (analysis/inertial_number.hpp): gamma_dot = shear_speed / t,
-// t = min(10 mean diameters, the box's height), at the load's normal stress.
-nlohmann::json shear_inertial_number(const RunConfig& c, const ShearLoadResult& r, double& value) {
-  const double d = 0.5 * (c.particle.diameter_min + c.particle.diameter_max);
-  return inertial_number_json({shear_box_strain_rate(c.shear_box.shear_speed, d, c.shear_box.height), d,
-                               c.particle.density, r.normal_stress_target,
-                               "shear_speed / min(10 mean diameters, shear_box.height)", "the normal stress"},
-                              value);
-}
 
 // The whole curve's features (analysis/shear_curve_features.hpp) from the recorded rows, as
 // for a measured curve: peak over a trailing 1 mm, secant stiffness to half the peak.
@@ -97,7 +88,7 @@ std::vector<std::string> load_warnings(const RunConfig& c, const ShearSample& sa
                 " mm (shear_box.shear_plane): the upper half holds (almost) no sample, and this shear strength is "
                 "not the sample's");
   double inertial_number = 0.0;
-  shear_inertial_number(c, r, inertial_number);
+  inertial_number_json(shear_inertial_inputs(c, r.normal_stress_target), inertial_number);
   if (inertial_number > kQuasiStaticInertialNumber)
     w.push_back("the inertial number is " + format_significant(inertial_number, 3) + ", above " +
                 format_shortest(kQuasiStaticInertialNumber) +
@@ -123,7 +114,7 @@ nlohmann::json load_summary(const RunConfig& c, const ShearSample& sample, const
                            r.curve.column("plate_height"), features),
       features);
   double inertial_number = 0.0;
-  s["inertial_number"] = shear_inertial_number(c, r, inertial_number);
+  s["inertial_number"] = inertial_number_json(shear_inertial_inputs(c, r.normal_stress_target), inertial_number);
   s["mean_normal_stress"] = r.mean_normal_stress;
   s["mean_normal_stress_error"] = r.mean_normal_stress_error;
   s["consolidated"] = r.consolidated;

@@ -12,13 +12,6 @@ namespace {
 
 std::string assignment(const std::string& key, double value) { return key + "=" + format_significant(value, 17); }
 
-// The shear curves' analysis settings of a test's model (its strength window).
-ShearCurveSettings curve_settings(const RunConfig& c) {
-  ShearCurveSettings s;
-  s.window = {c.shear_box.strength_window_start, c.shear_box.strength_window_end};
-  return s;
-}
-
 }  // namespace
 
 DemForward::DemForward(const DiagnosisSpec& spec, calibration::RunCache& cache, bool verbose)
@@ -50,14 +43,9 @@ Eigen::VectorXd DemForward::operator()(const ModelPoint& x, int realisation) {
     const calibration::RunRecord run = cache_.run(request);
     ++runs_;
     if (run.reused) ++reused_;
-    calibration::Features f = calibration::output_features(run.outputs);
-    if (test.scenario == Scenario::kShear) {
-      std::string fp, packing;
-      const RunConfig c = cache_.config_for(request, fp, packing);
-      const calibration::Features curves = calibration::shear_curve_features_of(
-          run.dir, c.shear_box.normal_stresses, curve_settings(c), c.shear_box.length);
-      f.insert(curves.begin(), curves.end());
-    }
+    std::string fingerprint, packing;
+    const calibration::Features f = calibration::run_features_of(
+        run.outputs, run.dir, test.scenario, cache_.config_for(request, fingerprint, packing));
     for (const Feature& feature : test.features) {
       const auto it = f.find(feature.name);
       if (it == f.end()) {
