@@ -78,7 +78,7 @@ def main():
         shutil.rmtree(staging, ignore_errors=True)
         raise
     names = [os.path.basename(p) for p in written]
-    if kind == "calibration":
+    if kind in ("calibration", "diagnosis"):
         from colzaplot import report
         report.embed_plots(os.path.join(result_dir, "report.md"), names)
     print(f"colza plot: {len(names)} plot(s) in {final}: {', '.join(names)}")

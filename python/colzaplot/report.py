@@ -1,4 +1,4 @@
-"""Embeds a calibration's plots in its report.md: a "Plots" section at the end, replaced
+"""Embeds a calibration's or a diagnosis's plots in its report.md: a "Plots" section at the end, replaced
 when the plots are drawn again."""
 import os
 

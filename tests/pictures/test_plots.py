@@ -97,16 +97,21 @@ def calibration(colza, source, tmp):
 def diagnosis(colza, source, tmp):
     """A diagnosis's plots from its summary.json: data/diagnosis_summary.json is what
     `colza diagnose` wrote for data/diagnosis_small_spec.toml (a verdict "unexplained", three
-    candidates: 42 DEM runs, 3-4 minutes, too long to repeat here)."""
+    candidates: 42 DEM runs, 3-4 minutes, too long to repeat here), embedded in its report.md."""
     d = os.path.join(tmp, "diagnosis")
     os.makedirs(d)
     shutil.copy(os.path.join(source, "tests", "pictures", "data", "diagnosis_summary.json"),
                 os.path.join(d, "summary.json"))
+    with open(os.path.join(d, "report.md"), "w") as f:
+        f.write("# Diagnosis\n")
     run_colza(colza, "plot", d)
     expected = ["diagnosis_features.png", "diagnosis_similarity.png"]
     assert plots_of(d) == expected, plots_of(d)
     for name in expected:
         check_png(os.path.join(d, "plots", name))
+    with open(os.path.join(d, "report.md")) as f:
+        report = f.read()
+    assert "## Plots" in report and "(plots/diagnosis_features.png)" in report, report
 
 
 CASES = {"oedometer": oedometer, "shear": shear, "calibration": calibration, "diagnosis": diagnosis}
