@@ -211,7 +211,8 @@ std::string diagnosis_report(const DiagnosisProblem& p, const DiagnosisResult& d
     }
     if (!d.held_out.empty()) {
       o << "\nEach test held out (calibrate without it, predict it; linearised about each fit, "
-           "src/diagnose/held_out.hpp), RMS error in noise units:\n\n| held out | baseline | extended |\n|---|---|---|\n";
+           "src/diagnose/held_out.hpp), RMS error in units of the prediction's own sd (the noise and what the "
+           "other tests leave undetermined; - where they do not determine it):\n\n| held out | baseline | extended |\n|---|---|---|\n";
       for (const auto& h : d.held_out) o << "| " << h.test << " | " << fmt(h.rms_before) << " | " << fmt(h.rms_after) << " |\n";
     }
     o << "\n";

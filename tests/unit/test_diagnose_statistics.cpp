@@ -121,10 +121,21 @@ TEST(DiagnoseStatistics, HeldOutPredictionOfAnExactLinearModel) {
   const Eigen::VectorXd y0 = Eigen::VectorXd::Zero(4), sd = Eigen::VectorXd::Ones(4);
   const Eigen::VectorXd m = 0.5 * A.col(0);
   EXPECT_NEAR(held_out_rms(m, y0, sd, A, {true, true, false, false}), 0.0, 1e-12);
-  // An offset in the held-out feature alone: its error is the offset.
+  // An offset in the held-out feature alone: its error is the offset over the prediction's sd,
+  // sqrt(1 + 1^2 / (2^2 + 3^2 + 4^2)) = sqrt(30 / 29) noise units.
   Eigen::VectorXd m2 = m;
   m2[0] += 2.0;
-  EXPECT_NEAR(held_out_rms(m2, y0, sd, A, {true, false, false, false}), 2.0, 1e-12);
+  EXPECT_NEAR(held_out_rms(m2, y0, sd, A, {true, false, false, false}), 2.0 / std::sqrt(30.0 / 29.0), 1e-12);
+  // A parameter the kept features hardly feel (sensitivity 1e-3 there, 1 in the held-out
+  // feature): the prediction is uncertain, so an offset of 2 is well within it.
+  Eigen::MatrixXd B(4, 2);
+  B << 1, 1, 2, 1e-3, 3, 0, 4, 0;
+  Eigen::VectorXd m3 = Eigen::VectorXd::Zero(4);
+  m3[0] = 2.0;
+  EXPECT_LT(held_out_rms(m3, y0, sd, B, {true, false, false, false}), 0.01);
+  // Not felt at all by the kept features: no prediction.
+  B(1, 1) = 0.0;
+  EXPECT_TRUE(std::isnan(held_out_rms(m3, y0, sd, B, {true, false, false, false})));
   EXPECT_TRUE(std::isnan(held_out_rms(m, y0, sd, A, {true, true, true, true})));
 }
 
