@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "calibration/measured_heap_profile.hpp"
 #include "calibration/measured_load_unload.hpp"
 #include "calibration/measured_shear_features.hpp"
 #include "calibration/spec_measured.hpp"
@@ -39,6 +40,16 @@ Features measured_shear_curve_features(const std::string& csv, const MeasuredCur
   return f;
 }
 
+// A measured heap profile in the model's repose settings (measured_heap_profile.hpp): the
+// cone's angle, its error and the heap's height and radius, under a run's names.
+Features measured_heap_profile_features(const std::string& csv, const MeasuredCurveContext& c) {
+  const HeapAngle h = measured_heap_angle(csv, *c.model, c.spec_file, c.key);
+  return {{"angle_of_repose_deg", h.angle_deg},
+          {"angle_of_repose_error_deg", h.angle_error_deg},
+          {"heap_height", h.height},
+          {"heap_radius", h.radius}};
+}
+
 }  // namespace
 
 const std::vector<LabTest>& lab_tests() {
@@ -58,7 +69,7 @@ const std::vector<LabTest>& lab_tests() {
        nullptr, &measured_shear_curve_features},
       {"repose", Scenario::kRepose,
        {"angle_of_repose_deg", "angle_of_repose_error_deg", "heap_height", "heap_radius", "column_bulk_density"},
-       nullptr, nullptr},
+       nullptr, &measured_heap_profile_features},
   };
   return kTests;
 }

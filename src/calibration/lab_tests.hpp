@@ -33,7 +33,7 @@ struct LabTest {
   std::vector<std::string> features;
   SpecMeasuredReader read_spec_measured = nullptr;   // calibration stages
   CurveFeatureReader read_curve_features = nullptr;  // measured curves
-  // (repose: neither yet; a measured angle is one number)
+  // (repose: a heap profile; a measured angle alone is one number, given as a value)
 };
 
 const std::vector<LabTest>& lab_tests();

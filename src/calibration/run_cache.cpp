@@ -140,8 +140,8 @@ std::vector<std::string> with_seed(Scenario scenario, const std::string& config_
   return o;
 }
 
-// One angle of repose run: its outputs, and the heap's profile (every sphere's distance from
-// the axis, rho, and its top, m) written to dir/heap_profile.csv.
+// One angle of repose run: its outputs, and the heap's profile (scenario/repose.hpp) written
+// to dir/heap_profile.csv.
 nlohmann::json run_repose_outputs(const RunConfig& c, const fs::path& dir, double& wall) {
   Progress quiet(false);
   const auto t0 = std::chrono::steady_clock::now();
@@ -162,12 +162,8 @@ nlohmann::json run_repose_outputs(const RunConfig& c, const fs::path& dir, doubl
     out["angle_of_repose_error_deg"] = h.angle_error_deg;
     out["heap_fit_r2"] = h.r2;
   }
-  Table profile({"rho", "top"}, {"m", "m"});
-  for (std::size_t i = 0; i < r.final_state.size(); ++i)
-    profile.add_row({std::hypot(r.final_state.position[i].x(), r.final_state.position[i].y()),
-                     r.final_state.position[i].z() + r.final_state.radius[i]});
   fs::create_directories(dir);
-  write_csv((dir / "heap_profile.csv").string(), profile);
+  write_csv((dir / "heap_profile.csv").string(), heap_profile_table(r.final_state));
   return out;
 }
 

@@ -76,11 +76,7 @@ void run_repose_scenario(const RunConfig& c, const RunOptions& opt, OutputStagin
   add_snapshots_summary(s, r.snapshots);
   add_timing(s, r.stages);
 
-  // The heap's profile: every sphere's distance from the axis and its top (m).
-  Table profile({"rho", "top"}, {"m", "m"});
-  for (std::size_t i = 0; i < r.final_state.size(); ++i)
-    profile.add_row({std::hypot(r.final_state.position[i].x(), r.final_state.position[i].y()),
-                     r.final_state.position[i].z() + r.final_state.radius[i]});
+  const Table profile = heap_profile_table(r.final_state);
   write_csv(out.path("heap_profile.csv"), profile);
   write_packing(out.path("packing.txt"), r.column);
   write_packing(out.path("heap.txt"), r.final_state);

@@ -58,8 +58,8 @@ void require_model_accepts(const ConfigNode& n, const std::string& key, const Di
 std::string assignment(const std::string& key, double value) { return key + "=" + format_significant(value, 17); }
 
 // The features of a test's measured curves, when it names any: an oedometer's load-unload
-// curve (`curve`, with the sample's `sample_height` in m) or a shear series' curves, one per
-// load (`[[tests.curves]]` with `normal_stress` in Pa and `file`), in the formats of
+// curve (`curve`, with the sample's `sample_height` in m), a repose test's heap profile
+// (`curve`) or a shear series' curves, one per load (`[[tests.curves]]` with `normal_stress` in Pa and `file`), in the formats of
 // data/measured/README.md, reduced by the code that reduces colza's own runs
 // (calibration/lab_tests.hpp) and named as a run's features are.
 calibration::Features measured_curve_features(const ConfigNode& t, const std::string& spec_file,
@@ -73,10 +73,14 @@ calibration::Features measured_curve_features(const ConfigNode& t, const std::st
   } catch (const ConfigError& e) {
     t.fail("config", "test " + test.name + "'s model (its measured curves are read in its geometry): " + e.what());
   }
-  if (t.has("curve")) {
+  if (t.has("curve") && test.scenario == Scenario::kRepose) {
+    const calibration::MeasuredCurveContext c{&model, 0.0, spec_file, t.full("curve")};
+    const std::string csv = resolve(spec_file, required_string(t, "curve", "a measured heap profile (CSV)"));
+    out = calibration::lab_test("repose").read_curve_features(csv, c);
+  } else if (t.has("curve")) {
     if (test.scenario != Scenario::kOedometer)
-      t.fail("curve", "a load-unload curve belongs to an oedometer test (a shear test names [[tests.curves]], one "
-                      "per load)");
+      t.fail("curve", "a load-unload curve belongs to an oedometer test, a heap profile to a repose test (a shear "
+                      "test names [[tests.curves]], one per load)");
     t.require("sample_height", "the measured sample's height at zero piston travel, m");
     const calibration::MeasuredCurveContext c{&model, t.positive("sample_height", 0.0), spec_file, t.full("curve")};
     const std::string csv = resolve(spec_file, required_string(t, "curve", "a measured load-unload curve (CSV)"));

@@ -37,6 +37,15 @@ HeapFitSettings repose_fit_settings(const ReposeSpec& r) {
   return s;
 }
 
+Table heap_profile_table(const ParticleArrays& heap) {
+  Table profile({"rho", "azimuth_deg", "top"}, {"m", "deg", "m"});
+  for (std::size_t i = 0; i < heap.size(); ++i) {
+    const double x = heap.position[i].x(), y = heap.position[i].y();
+    profile.add_row({std::hypot(x, y), std::atan2(y, x) * 180.0 / kPi, heap.position[i].z() + heap.radius[i]});
+  }
+  return profile;
+}
+
 ReposeResult run_repose(const RunConfig& c, Progress& progress, double snapshot_interval) {
   const ReposeSpec& rs = c.repose;
   ReposeResult r;

@@ -12,6 +12,7 @@
 #include "core/stage_timing.hpp"
 #include "io/progress.hpp"
 #include "io/snapshot.hpp"
+#include "io/table.hpp"
 #include "scenario/settling.hpp"
 
 namespace colza {
@@ -40,5 +41,10 @@ ReposeResult run_repose(const RunConfig& config, Progress& progress, double snap
 
 // The cone-fit settings of the config (sectors, fit range; the heap's axis is the cylinder's).
 HeapFitSettings repose_fit_settings(const ReposeSpec& r);
+
+// The heap's profile, one row per sphere: rho (m, its distance from the axis), azimuth_deg
+// (deg, atan2(y, x)) and top (m, z + r): heap_profile.csv, a valid measured heap profile
+// (calibration/measured_heap_profile.hpp).
+Table heap_profile_table(const ParticleArrays& heap);
 
 }  // namespace colza

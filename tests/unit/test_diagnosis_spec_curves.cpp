@@ -3,6 +3,7 @@
 // feature the curves do not give, or a curve on the wrong test, is refused naming the key.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -74,4 +75,26 @@ TEST(DiagnosisSpecCurves, AFeatureTheCurvesDoNotGiveOrACurveOnTheWrongTestIsRefu
   e = error_of(dir.write("d.toml", spec_with("[[tests.curves]]\nnormal_stress = 25750.0\nfile = \"unload.csv\"\n",
                                              "cycle1/rebound_strain")));
   EXPECT_NE(e.find("tests[0].curves[0].file"), std::string::npos) << e;
+}
+
+TEST(DiagnosisSpecCurves, AReposeTestsAngleComesFromItsHeapProfile) {
+  // Points on a 30 deg cone 100 mm high every 2 mm (calibration/measured_heap_profile.hpp).
+  const colza::testing::ScratchDir dir;
+  std::string profile = "rho,top\n";
+  const double t = std::tan(30.0 * 3.14159265358979323846 / 180.0);
+  char row[64];
+  for (double rho = 0.0; 0.100 - rho * t > 0.0; rho += 0.002) {
+    std::snprintf(row, sizeof row, "%.17g,%.17g\n", rho, 0.100 - rho * t);
+    profile += row;
+  }
+  dir.write("heap.csv", profile);
+  const std::string spec = dir.write(
+      "spec.toml", "[[parameters]]\nname = \"mu\"\nkey = \"particle.friction\"\nlower = 0.1\nupper = 0.5\n"
+                   "[[tests]]\nname = \"repose\"\nscenario = \"repose\"\nconfig = \"" COLZA_SOURCE_DIR
+                   "/tests/data/small_repose.toml\"\ncurve = \"heap.csv\"\n"
+                   "[[tests.features]]\nname = \"angle_of_repose_deg\"\nuncertainty = 1.0\n");
+  const diagnose::DiagnosisSpec s = diagnose::read_diagnosis_spec(spec);
+  ASSERT_EQ(s.tests.size(), 1u);
+  ASSERT_EQ(s.tests[0].features.size(), 1u);
+  EXPECT_NEAR(s.tests[0].features[0].measured, 30.0, 1e-9);
 }
