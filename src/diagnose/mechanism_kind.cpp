@@ -52,4 +52,40 @@ std::string separating_experiment(MechanismKind a, MechanismKind b) {
   return "a test in which the two candidates' signatures differ (compare their rows in the signature table)";
 }
 
+std::string unseen_by(MechanismKind k, const std::vector<std::string>& features) {
+  const auto any = [&](auto&& matches) {
+    for (const std::string& f : features)
+      if (matches(f)) return true;
+    return false;
+  };
+  const auto contains = [](const std::string& f, const char* part) { return f.find(part) != std::string::npos; };
+  switch (k) {
+    case MechanismKind::kRollingResistance:
+      if (any([&](const std::string& f) { return contains(f, "angle_of_repose"); })) return "";
+      return "rolling resistance: no angle of repose among these tests (colza run repose); sliding friction absorbs "
+             "much of its effect on strength and density, the heap's angle does not";
+    case MechanismKind::kElastoPlastic:
+      if (any([&](const std::string& f) { return contains(f, "cycle"); })) return "";
+      return "elasto-plastic contact: no load-unload cycle among these tests (oedometer.cycles); a loading curve "
+             "alone is met by a softer linear contact";
+    case MechanismKind::kHertz: {
+      std::vector<std::string> moduli;
+      for (const std::string& f : features)
+        if (contains(f, "/modulus@")) moduli.push_back(f.substr(0, f.find("/modulus@")));
+      for (std::size_t a = 0; a < moduli.size(); ++a)
+        for (std::size_t b = a + 1; b < moduli.size(); ++b)
+          if (moduli[a] == moduli[b]) return "";
+      return "Hertz-Mindlin contact: no branch's modulus at two stresses among these tests "
+             "(oedometer.modulus_stresses); Hertz contacts stiffen as the stress grows";
+    }
+    case MechanismKind::kViscous:
+      return "viscous damping: only the same test at two speeds a decade apart shows it (colza run ... --speeds); "
+             "check that the tests were run at two speeds";
+    case MechanismKind::kCohesion:
+    case MechanismKind::kOther:
+      return "";
+  }
+  return "";
+}
+
 }  // namespace colza::diagnose

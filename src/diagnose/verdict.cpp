@@ -63,6 +63,14 @@ Verdict decide(const DiagnosisProblem& p, const Fit& baseline, double baseline_b
     v.kind = VerdictKind::kNoDiscrepancy;
     v.text = "No significant discrepancy: the calibrated baseline reproduces every feature within its noise (" +
              adequacy_text + " >= alpha = " + fmt(alpha) + "). The data give no reason to extend the model.";
+    std::vector<std::string> feature_names;
+    for (const Feature& f : p.features) feature_names.push_back(f.name);
+    std::string unseen;
+    for (const Candidate& c : cands)
+      if (const std::string why = unseen_by(c.kind, feature_names); !why.empty() && unseen.find(why) == std::string::npos)
+        unseen += (unseen.empty() ? "" : "; ") + why;
+    if (!unseen.empty())
+      v.text += " These tests may not see every candidate: " + unseen + ".";
     return v;
   }
   const std::vector<int> significant = significant_candidates(scores, alpha);

@@ -147,3 +147,18 @@ TEST(DiagnoseStatistics, SeparatingExperimentsFollowPhysicsSectionEight) {
   EXPECT_EQ(mechanism_kind_of({"contact.bond=load_induced"}), MechanismKind::kCohesion);
   EXPECT_EQ(mechanism_kind_of({"contact.normal=walton_braun"}), MechanismKind::kElastoPlastic);
 }
+
+TEST(DiagnoseStatistics, ANoDiscrepancyVerdictNamesTheCandidatesItsTestsCannotSee) {
+  // physics.md section 8: the test that shows each mechanism apart from the baseline's own
+  // parameters; named only when no feature comes from it.
+  const std::vector<std::string> oedometer_and_shear{"bulk_density", "cycle1/rebound_strain", "branch2/modulus@20000Pa",
+                                                     "cohesion", "tan_phi"};
+  EXPECT_NE(unseen_by(MechanismKind::kRollingResistance, oedometer_and_shear).find("angle of repose"), std::string::npos);
+  EXPECT_EQ(unseen_by(MechanismKind::kRollingResistance, {"angle_of_repose_deg", "cohesion"}), "");
+  EXPECT_EQ(unseen_by(MechanismKind::kElastoPlastic, oedometer_and_shear), "");
+  EXPECT_NE(unseen_by(MechanismKind::kElastoPlastic, {"c1", "c2"}).find("load-unload cycle"), std::string::npos);
+  EXPECT_NE(unseen_by(MechanismKind::kHertz, oedometer_and_shear).find("two stresses"), std::string::npos);
+  EXPECT_EQ(unseen_by(MechanismKind::kHertz, {"branch1/modulus@20000Pa", "branch1/modulus@40000Pa"}), "");
+  EXPECT_NE(unseen_by(MechanismKind::kViscous, oedometer_and_shear).find("--speeds"), std::string::npos);
+  EXPECT_EQ(unseen_by(MechanismKind::kCohesion, oedometer_and_shear), "");
+}
