@@ -1,5 +1,5 @@
-# Checks the object files of the force loops' wider copies (src/CMakeLists.txt,
-# colza_force_loops_<isa>, compiled with -fno-weak): each may define, besides local symbols,
+# Checks the object files of the kernels' wider copies (src/CMakeLists.txt, colza_kernels_<isa>:
+# the force loops and the integrator's ranges, compiled with -fno-weak): each may define, besides local symbols,
 # only its entry point's namespace colza::kernels_<isa> as global code, and no weak or unique
 # symbol but the exception personality's pointer (DW.ref.__gxx_personality_v0, the same data in
 # every object file). A weak function there (an inline function or template instantiation
@@ -11,8 +11,8 @@ string(REPLACE "|" ";" objects "${OBJECTS}")
 set(failures "")
 foreach(object IN LISTS objects)
   get_filename_component(file "${object}" NAME)
-  if(NOT file MATCHES "force_loops_([a-z0-9]+)\\.cpp\\.o(bj)?$")
-    message(FATAL_ERROR "${object}: not an object file of a force-loops copy")
+  if(NOT file MATCHES "_(generic|avx2|avx512)\\.cpp\\.o(bj)?$")
+    message(FATAL_ERROR "${object}: not an object file of a kernels' copy")
   endif()
   set(isa ${CMAKE_MATCH_1})
   string(LENGTH "kernels_${isa}" length)
@@ -41,7 +41,7 @@ foreach(object IN LISTS objects)
     endif()
   endforeach()
   if(entries EQUAL 0)
-    string(APPEND failures "\n  ${file}: no entry point colza::kernels_${isa}::force_loops")
+    string(APPEND failures "\n  ${file}: no entry point in colza::kernels_${isa}")
   endif()
   message(STATUS "${file}: ${entries} global symbol(s) in colza::kernels_${isa}, no weak symbol")
 endforeach()

@@ -4,7 +4,7 @@
 #include "contact/slot_registry.hpp"
 #include "core/cpu_model.hpp"
 #include "core/version.hpp"
-#include "engine/kernel_isa.hpp"
+#include "core/kernel_isa.hpp"
 #include "io/format_number.hpp"
 #include "io/hdf5_writer.hpp"
 #include "io/summary.hpp"
@@ -26,7 +26,7 @@ nlohmann::json common_summary(const RunConfig& c, const std::string& scenario, i
           {"damping", c.integration.damping},
           {"damping_form", to_string(c.integration.damping_form)},
           {"time_step_mode", c.integration.automatic_time_step ? "auto" : "fixed"},
-          // The copy of the force loops that ran and what it was built for (engine/kernel_isa.hpp),
+          // The copy of the force loops that ran and what it was built for (core/kernel_isa.hpp),
           // and the CPU: the speed depends on them, the results do not.
           {"kernel_isa", to_string(active_kernel_isa())},
           {"kernel_isa_built_for", kernel_isa_built_for(active_kernel_isa())},

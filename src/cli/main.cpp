@@ -22,7 +22,7 @@
 #include "core/interrupt.hpp"
 #include "core/unstable_motion.hpp"
 #include "core/version.hpp"
-#include "engine/kernel_isa.hpp"
+#include "core/kernel_isa.hpp"
 #include "io/output_error.hpp"
 
 namespace {
@@ -85,7 +85,7 @@ CLI::Validator positive_finite() {
 
 int main(int argc, char** argv) {
   CLI::App app{"colza: discrete element simulation of oilseed bulks (oedometer, shear box)"};
-  // The version, the force loops' copies (engine/kernel_isa.hpp) and the CPU.
+  // The version, the force loops' copies (core/kernel_isa.hpp) and the CPU.
   app.set_version_flag("--version", [] {
     std::string s = std::string("colza ") + colza::kVersion + " (" + colza::git_revision() + ")\nforce loops: ";
     try {
@@ -218,7 +218,7 @@ int main(int argc, char** argv) {
 #ifdef _OPENMP
   omp_set_num_threads(run->parsed() ? opt.threads : diagnose->parsed() ? diag.threads : cal.threads);
 #endif
-  // A $COLZA_ISA naming no copy of the force loops that runs here is bad input (engine/kernel_isa.hpp).
+  // A $COLZA_ISA naming no copy of the force loops that runs here is bad input (core/kernel_isa.hpp).
   try {
     colza::active_kernel_isa();
   } catch (const colza::ConfigError& e) {

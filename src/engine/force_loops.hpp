@@ -3,8 +3,10 @@
 // mechanism or the generic tier), serially or on the stepper's threads
 // (engine/force_partition.hpp). They are the hot path, so they are compiled once per
 // instruction set (engine/isa/force_loops_<isa>.cpp, all from engine/force_loops_body.hpp)
-// and engine/kernel_isa.hpp chooses one copy at run time. Every copy gives the same bits.
+// and core/kernel_isa.hpp chooses one copy at run time (force_loops_for). Every copy gives the
+// same bits.
 #pragma once
+#include "core/kernel_isa.hpp"
 #include "core/materials.hpp"
 #include "engine/force_partition.hpp"
 #include "engine/pair_sinks.hpp"
@@ -30,8 +32,10 @@ struct ForceLoopJob {
 // the ledger terms and break counts go to `totals`.
 using ForceLoops = void (*)(const ForceLoopJob& job, detail::ForceLoopTotals& totals);
 
-// The copies (each defined only when src/CMakeLists.txt builds it: engine/kernel_isa.cpp
-// knows which).
+// The compiled copy for `isa` (which must be built: kernel_isa_built).
+ForceLoops force_loops_for(KernelIsa isa);
+
+// The copies (each defined only when src/CMakeLists.txt builds it).
 namespace kernels_generic {
 void force_loops(const ForceLoopJob& job, detail::ForceLoopTotals& totals);
 }

@@ -1,12 +1,12 @@
 // The stepper's hot half: the two halves of a step around the force loops (engine/force_loops.hpp,
-// compiled once per instruction set and chosen by engine/kernel_isa.hpp). The time step and the
+// compiled once per instruction set and chosen by core/kernel_isa.hpp). The time step and the
 // stability checks are in engine/stepper_stability.cpp.
 #include "engine/stepper.hpp"
 
 #include "core/concurrent.hpp"
 #include "core/interrupt.hpp"
 #include "engine/force_loops.hpp"
-#include "engine/kernel_isa.hpp"
+#include "core/kernel_isa.hpp"
 
 namespace colza {
 

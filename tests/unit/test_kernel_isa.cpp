@@ -1,5 +1,5 @@
-// Every compiled copy of the force loops (engine/kernel_isa.hpp: generic, avx2, avx512) that
-// this CPU runs gives the generic copy's bits: the vector width changes how many contacts a
+// Every compiled copy of the kernels (core/kernel_isa.hpp: generic, avx2, avx512; the force
+// loops and the integrator's ranges) that this CPU runs gives the generic copy's bits: the vector width changes how many contacts a
 // vector instruction computes, never an operation or the order of a sum (each lane is one
 // contact, results are consumed in pair order, no FMA is formed: -ffp-contract=off).
 // Compared: the small oedometer (tests/data/small_oedometer.toml: generation, settling, the
@@ -16,7 +16,9 @@
 #include <vector>
 
 #include "config/run_config.hpp"
-#include "engine/kernel_isa.hpp"
+#include "core/kernel_isa.hpp"
+#include "engine/force_loops.hpp"
+#include "integrate/integrate_range.hpp"
 #include "io/progress.hpp"
 #include "jostling_box.hpp"
 #include "scenario/oedometer.hpp"
@@ -90,6 +92,7 @@ TEST(KernelIsa, TheGenericCopyRunsEverywhereAndOnlyCopiesThatRunHereCanBeChosen)
   EXPECT_EQ(widest_kernel_isa_here(), kernel_isas_here().back());
   for (KernelIsa isa : {KernelIsa::kGeneric, KernelIsa::kAvx2, KernelIsa::kAvx512}) {
     EXPECT_EQ(kernel_isa_built(isa), force_loops_for(isa) != nullptr);
+    EXPECT_EQ(kernel_isa_built(isa), integrate_range_for(isa) != nullptr);
     if (!kernel_isa_runs_here(isa)) EXPECT_THROW(set_kernel_isa(isa), std::invalid_argument) << to_string(isa);
   }
 #if defined(__x86_64__)

@@ -1,4 +1,4 @@
-#include "engine/kernel_isa.hpp"
+#include "core/kernel_isa.hpp"
 
 #include <atomic>
 #include <cstdlib>
@@ -6,10 +6,11 @@
 
 #include "config/config_error.hpp"
 
-// src/CMakeLists.txt defines COLZA_KERNELS_BASELINE (the build's target options) and, for each
-// extra copy it builds, COLZA_KERNELS_AVX2 / COLZA_KERNELS_AVX512 (that copy's options).
+// src/CMakeLists.txt defines, for colza_core, COLZA_KERNELS_BASELINE (the build's target
+// options) and, for each wider copy it builds, COLZA_KERNELS_AVX2 / COLZA_KERNELS_AVX512 (that
+// copy's options).
 #ifndef COLZA_KERNELS_BASELINE
-#error "src/CMakeLists.txt defines COLZA_KERNELS_BASELINE for engine/kernel_isa.cpp"
+#error "src/CMakeLists.txt defines COLZA_KERNELS_BASELINE for colza_core"
 #endif
 
 namespace colza {
@@ -41,7 +42,7 @@ bool cpu_supports(KernelIsa isa) {
 #endif
 }
 
-// The copy the force loops take (-1 before the first active_kernel_isa or set_kernel_isa) and
+// The copy the kernels take (-1 before the first active_kernel_isa or set_kernel_isa) and
 // who chose it.
 enum class ChosenBy { kWidestHere, kEnvironment, kProgram };
 std::atomic<int> chosen{-1};
@@ -62,12 +63,12 @@ KernelIsa from_environment() {
   if (name.empty() || name == "auto") return widest_kernel_isa_here();
   const std::optional<KernelIsa> isa = parse_kernel_isa(name);
   if (!isa)
-    throw ConfigError("$COLZA_ISA", "", "'" + name + "' names no copy of the force loops (generic, avx2, avx512 or auto)");
+    throw ConfigError("$COLZA_ISA", "", "'" + name + "' names no copy of the kernels (generic, avx2, avx512 or auto)");
   if (!kernel_isa_built(*isa))
-    throw ConfigError("$COLZA_ISA", "", "this binary has no " + name + " copy of the force loops (built:" +
+    throw ConfigError("$COLZA_ISA", "", "this binary has no " + name + " copy of the kernels (built:" +
                                             built_copies() + ")");
   if (!cpu_supports(*isa))
-    throw ConfigError("$COLZA_ISA", "", "this CPU cannot run the " + name + " copy of the force loops (built for " +
+    throw ConfigError("$COLZA_ISA", "", "this CPU cannot run the " + name + " copy of the kernels (built for " +
                                             kernel_isa_built_for(*isa) + "); unset it to take the widest it runs");
   chosen_by = ChosenBy::kEnvironment;
   return *isa;
@@ -96,7 +97,18 @@ const char* kernel_isa_built_for(KernelIsa isa) {
   }
 }
 
-bool kernel_isa_built(KernelIsa isa) { return force_loops_for(isa) != nullptr; }
+bool kernel_isa_built(KernelIsa isa) {
+  switch (isa) {
+    case KernelIsa::kGeneric: return true;
+#ifdef COLZA_KERNELS_AVX2
+    case KernelIsa::kAvx2: return true;
+#endif
+#ifdef COLZA_KERNELS_AVX512
+    case KernelIsa::kAvx512: return true;
+#endif
+    default: return false;
+  }
+}
 
 bool kernel_isa_runs_here(KernelIsa isa) { return kernel_isa_built(isa) && cpu_supports(isa); }
 
@@ -120,23 +132,10 @@ KernelIsa active_kernel_isa() {
 
 void set_kernel_isa(KernelIsa isa) {
   if (!kernel_isa_runs_here(isa))
-    throw std::invalid_argument(std::string("the ") + to_string(isa) + " copy of the force loops does not run here (built:" +
+    throw std::invalid_argument(std::string("the ") + to_string(isa) + " copy of the kernels does not run here (built:" +
                                 built_copies() + ")");
   chosen_by = ChosenBy::kProgram;
   chosen.store(static_cast<int>(isa), std::memory_order_relaxed);
-}
-
-ForceLoops force_loops_for(KernelIsa isa) {
-  switch (isa) {
-    case KernelIsa::kGeneric: return &kernels_generic::force_loops;
-#ifdef COLZA_KERNELS_AVX2
-    case KernelIsa::kAvx2: return &kernels_avx2::force_loops;
-#endif
-#ifdef COLZA_KERNELS_AVX512
-    case KernelIsa::kAvx512: return &kernels_avx512::force_loops;
-#endif
-    default: return nullptr;
-  }
 }
 
 std::string kernel_isa_report() {

@@ -1,7 +1,8 @@
-// Which compiled copy of the force loops (engine/force_loops.hpp) this process runs.
+// Which compiled copy of the hot kernels this process runs: the force loops
+// (engine/force_loops.hpp) and the integrator's particle ranges (integrate/integrate_range.hpp).
 //
 // The binary is built for a portable baseline (src/CMakeLists.txt: x86-64), so it runs on any
-// CPU of its architecture. The force loops, where a step spends most of its time, are also
+// CPU of its architecture. The kernels, where a step spends most of its time, are also
 // compiled for x86-64-v3 (AVX2, FMA) and x86-64-v4 (AVX-512) on x86-64. At the first step the
 // process takes the widest copy this CPU (and its operating system) can run, or the one the
 // environment variable COLZA_ISA names (generic, avx2, avx512, or auto: the widest). Every copy
@@ -11,7 +12,6 @@
 #include <string>
 #include <string_view>
 #include <vector>
-#include "engine/force_loops.hpp"
 
 namespace colza {
 
@@ -32,15 +32,13 @@ std::vector<KernelIsa> kernel_isas_here();
 // The widest copy that runs here.
 KernelIsa widest_kernel_isa_here();
 
-// The copy the force loops take: set_kernel_isa's, else $COLZA_ISA's (read at the first call),
+// The copy the kernels take: set_kernel_isa's, else $COLZA_ISA's (read at the first call),
 // else the widest here. Throws ConfigError (config/config_error.hpp) when $COLZA_ISA names no
 // copy, or one this binary lacks or this CPU cannot run.
 KernelIsa active_kernel_isa();
-// From now on the force loops take `isa` (tests, benchmarks). Throws std::invalid_argument
-// when it does not run here.
+// From now on the kernels take `isa` (tests, benchmarks). Throws std::invalid_argument when
+// it does not run here.
 void set_kernel_isa(KernelIsa isa);
-// The compiled copy of the force loops for `isa` (which must be built).
-ForceLoops force_loops_for(KernelIsa isa);
 
 // One line for people and result files: the copy taken and how it was chosen, and every
 // copy built with its target options, e.g. "avx512 (widest here); built: generic
