@@ -2,7 +2,7 @@
 // neighbour rebuild and the integrator, on a jammed lattice packing of 6-7 mm spheres with
 // the oedometer's default materials. Items processed = particles, so the reported rate is
 // particle-steps per second of that stage alone. The context printed first names the CPU and
-// the copy of the force loops that runs (engine/kernel_isa.hpp: the widest this CPU runs, or
+// the copy of the force loops that runs (core/kernel_isa.hpp: the widest this CPU runs, or
 // the one $COLZA_ISA names, e.g. COLZA_ISA=avx2) with every copy's target options.
 #include <benchmark/benchmark.h>
 
@@ -16,7 +16,7 @@
 #endif
 
 #include "core/cpu_model.hpp"
-#include "engine/kernel_isa.hpp"
+#include "core/kernel_isa.hpp"
 #include "engine/pair_batch.hpp"
 #include "engine/stepper.hpp"
 #include "io/packing_file.hpp"

@@ -36,7 +36,7 @@ rounding on this packing (velocities 1e-11 m/s apart after 100 steps, where they
 9e-3 m/s; session 12 of tests/bench/PERFORMANCE_LOG.md), so row "YADE" is the fair
 comparison; --skip-yade-cohfrict leaves the slower form out.
 
-colza's force loops are compiled once per instruction set (src/engine/kernel_isa.hpp); row
+colza's force loops are compiled once per instruction set (src/core/kernel_isa.hpp); row
 "colza" runs the copy colza chooses on this CPU, and --isa adds a row per copy forced through
 $COLZA_ISA (e.g. --isa generic,avx2,avx512), --also another colza binary (e.g. an older or a
 -march=native build: --also native=/path/to/colza). The CPU model, the copy each row ran and
