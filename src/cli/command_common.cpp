@@ -2,7 +2,9 @@
 
 #include "config/plausibility.hpp"
 #include "contact/slot_registry.hpp"
+#include "core/cpu_model.hpp"
 #include "core/version.hpp"
+#include "core/kernel_isa.hpp"
 #include "io/format_number.hpp"
 #include "io/hdf5_writer.hpp"
 #include "io/summary.hpp"
@@ -23,7 +25,13 @@ nlohmann::json common_summary(const RunConfig& c, const std::string& scenario, i
           {"contact_model", describe(c.contact)},
           {"damping", c.integration.damping},
           {"damping_form", to_string(c.integration.damping_form)},
-          {"time_step_mode", c.integration.automatic_time_step ? "auto" : "fixed"}};
+          {"time_step_mode", c.integration.automatic_time_step ? "auto" : "fixed"},
+          // The copy of the force loops that ran and what it was built for (core/kernel_isa.hpp),
+          // and the CPU: the speed depends on them, the results do not.
+          {"kernel_isa", to_string(active_kernel_isa())},
+          {"kernel_isa_built_for", kernel_isa_built_for(active_kernel_isa())},
+          {"kernel_isa_report", kernel_isa_report()},
+          {"cpu_model", cpu_model()}};
 }
 
 double total_wall_seconds(const std::vector<StageTiming>& stages) {

@@ -17,9 +17,12 @@
 #include "cli/features_command.hpp"
 #include "cli/plot_command.hpp"
 #include "cli/run_commands.hpp"
+#include "config/config_error.hpp"
+#include "core/cpu_model.hpp"
 #include "core/interrupt.hpp"
 #include "core/unstable_motion.hpp"
 #include "core/version.hpp"
+#include "core/kernel_isa.hpp"
 #include "io/output_error.hpp"
 
 namespace {
@@ -82,7 +85,16 @@ CLI::Validator positive_finite() {
 
 int main(int argc, char** argv) {
   CLI::App app{"colza: discrete element simulation of oilseed bulks (oedometer, shear box)"};
-  app.set_version_flag("--version", std::string("colza ") + colza::kVersion + " (" + colza::git_revision() + ")");
+  // The version, the force loops' copies (core/kernel_isa.hpp) and the CPU.
+  app.set_version_flag("--version", [] {
+    std::string s = std::string("colza ") + colza::kVersion + " (" + colza::git_revision() + ")\nforce loops: ";
+    try {
+      s += colza::kernel_isa_report();
+    } catch (const colza::ConfigError& e) {  // a bad $COLZA_ISA
+      s += e.what();
+    }
+    return s + "\nCPU: " + colza::cpu_model();
+  });
   app.require_subcommand(1);
   // Usage errors read like every other colza error (`colza: error: ...`), then point at --help.
   app.failure_message([](const CLI::App*, const CLI::Error& e) {
@@ -211,6 +223,13 @@ int main(int argc, char** argv) {
 #ifdef _OPENMP
   omp_set_num_threads(run->parsed() ? opt.threads : diagnose->parsed() ? diag.threads : cal.threads);
 #endif
+  // A $COLZA_ISA naming no copy of the force loops that runs here is bad input (core/kernel_isa.hpp).
+  try {
+    colza::active_kernel_isa();
+  } catch (const colza::ConfigError& e) {
+    std::fprintf(stderr, "colza: error: %s\n", e.what());
+    return 2;
+  }
   colza::install_interrupt_handlers();
   try {
     if (run->parsed()) return colza::run_command(opt);

@@ -10,7 +10,7 @@
 // row in slot_registry.cpp. Per-contact state beyond the core history (ContactHistory) is
 // declared by kStateDoubles and kept in columns (contact/slot_state.hpp).
 //
-// Two tiers run a model (engine/stepper.cpp): the baseline (linear, Coulomb, no damping, no
+// Two tiers run a model (engine/force_loops_body.hpp): the baseline (linear, Coulomb, no damping, no
 // rolling, no bond or the contact bond) runs the batched kernels, and so do its particle pairs
 // with one lane mechanism (rolling resistance or viscous damping alone); any other
 // combination runs the generic law (contact/generic_law.hpp), one loop with a run-time choice

@@ -1,4 +1,4 @@
-// Where the force loops put a pair's force (internal to the stepper, engine/stepper.cpp):
+// Where the force loops put a pair's force (internal to the stepper, engine/force_loops_body.hpp):
 // onto the bodies at once (serial), or onto inner bodies and into per-pair slots for the
 // boundary bodies (threaded, engine/force_partition.hpp); for wall pairs, onto the sphere and
 // the wall, or onto the sphere with the wall's share kept by pair. Each output has

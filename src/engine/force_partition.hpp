@@ -1,4 +1,4 @@
-// How the threaded force loop (engine/stepper.cpp) shares the pairs among T threads, and
+// How the threaded force loop (engine/force_loops_body.hpp) shares the pairs among T threads, and
 // its buffers.
 //
 // The serial loop adds, for every particle q, in this order: the pairs (k, q), k < q, in

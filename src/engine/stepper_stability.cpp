@@ -1,7 +1,7 @@
 // The stepper's cold half: setting the time step (fixed, or a safety factor times the
 // critical estimate, integrate/time_step.hpp) and the checks that stop a run whose motion
-// has blown up (core/unstable_motion.hpp, engine/motion_limits.hpp). The force loop and the
-// step itself are in engine/stepper.cpp.
+// has blown up (core/unstable_motion.hpp, engine/motion_limits.hpp). The step itself is in
+// engine/stepper.cpp, the force loops in engine/force_loops_body.hpp.
 #include <cstdio>
 #include <string>
 

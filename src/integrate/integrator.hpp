@@ -52,7 +52,8 @@ IntegrationReport integrate_step(ParticleArrays& particles, const IntegratorSett
 
 // Only the motion of particles [begin, end), no sums: the state update of integrate_step,
 // the same bits for every particle whatever the range (the threaded force loop of
-// engine/stepper.cpp integrates each thread's particles as soon as their forces are final).
+// engine/force_loops_body.hpp integrates each thread's particles as soon as their forces are
+// final).
 void integrate_motion(ParticleArrays& particles, const IntegratorSettings& settings, double dt, std::size_t begin,
                       std::size_t end);
 // What a step whose motion was done by integrate_motion reports: no sum (all NaN), as

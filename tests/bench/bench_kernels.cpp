@@ -1,7 +1,9 @@
 // Micro-benchmarks of the contact kernel (force computation over the candidate pairs), the
 // neighbour rebuild and the integrator, on a jammed lattice packing of 6-7 mm spheres with
 // the oedometer's default materials. Items processed = particles, so the reported rate is
-// particle-steps per second of that stage alone.
+// particle-steps per second of that stage alone. The context printed first names the CPU and
+// the copy of the force loops that runs (core/kernel_isa.hpp: the widest this CPU runs, or
+// the one $COLZA_ISA names, e.g. COLZA_ISA=avx2) with every copy's target options.
 #include <benchmark/benchmark.h>
 
 #include <boost/random/mersenne_twister.hpp>
@@ -13,6 +15,8 @@
 #include <omp.h>
 #endif
 
+#include "core/cpu_model.hpp"
+#include "core/kernel_isa.hpp"
 #include "engine/pair_batch.hpp"
 #include "engine/stepper.hpp"
 #include "io/packing_file.hpp"
@@ -141,7 +145,9 @@ void BM_OedometerForces(benchmark::State& state) {
 // every contact, the ledger off as in the loading), over the touching contacts of the settled
 // oedometer packing loaded into batches once, outside the timing: no copies into lanes, no
 // scatter, no history written back. The floor the batched kernel's structure cannot go
-// below; items = contacts.
+// below; items = contacts. Compiled here, for the build's baseline (x86-64: SSE2), not
+// through the force loops' copies ($COLZA_ISA does not change it); a -DCOLZA_NATIVE=ON build
+// measures the machine's own vectors.
 void BM_OedometerLaneArithmetic(benchmark::State& state) {
   World w = oedometer_packing();
   if (!has_packing(state, w)) return;
@@ -242,4 +248,12 @@ BENCHMARK(BM_RebuildCheck)->Arg(2287)->Arg(9805);
 BENCHMARK(BM_Integrate)->ArgsProduct({{2287, 9805}, {1, 2}})->UseRealTime();
 BENCHMARK(BM_IntegrateMotion)->Arg(2287)->Arg(9805);
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::AddCustomContext("cpu", cpu_model());
+  benchmark::AddCustomContext("force_loops", kernel_isa_report());  // throws on a bad $COLZA_ISA
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -36,6 +36,12 @@ rounding on this packing (velocities 1e-11 m/s apart after 100 steps, where they
 9e-3 m/s; session 12 of tests/bench/PERFORMANCE_LOG.md), so row "YADE" is the fair
 comparison; --skip-yade-cohfrict leaves the slower form out.
 
+colza's force loops are compiled once per instruction set (src/core/kernel_isa.hpp); row
+"colza" runs the copy colza chooses on this CPU, and --isa adds a row per copy forced through
+$COLZA_ISA (e.g. --isa generic,avx2,avx512), --also another colza binary (e.g. an older or a
+-march=native build: --also native=/path/to/colza). The CPU model, the copy each row ran and
+what it was built for are printed from colza's summary.json.
+
 Neither YADE nor LAMMPS is needed by the build or the tests: this script is run by hand,
 e.g.  python3 tests/bench/compare_codes.py --colza build/src/colza --steps 20000
 """
@@ -88,10 +94,10 @@ def peak_rss_kb(stderr_text):
     return int(m.group(1)) if m else None
 
 
-def run_timed(cmd, cwd, log_path):
+def run_timed(cmd, cwd, log_path, env=None):
     """Runs cmd under /usr/bin/time -v; returns (stdout, stderr, peak RSS kB, wall s)."""
     t0 = time.perf_counter()
-    p = subprocess.run(["/usr/bin/time", "-v"] + cmd, cwd=cwd, capture_output=True, text=True)
+    p = subprocess.run(["/usr/bin/time", "-v"] + cmd, cwd=cwd, capture_output=True, text=True, env=env)
     wall = time.perf_counter() - t0
     with open(log_path, "w") as f:
         f.write(" ".join(cmd) + "\n--- stdout\n" + p.stdout + "\n--- stderr\n" + p.stderr)
@@ -110,7 +116,8 @@ def prepare_packing(colza, work):
     return packing
 
 
-def run_colza(colza, packing, dt, steps, work, threads):
+def run_colza(colza, packing, dt, steps, work, threads, isa=None, code="colza"):
+    """One loading run; `isa` forces a copy of the force loops ($COLZA_ISA), None lets colza choose."""
     out = os.path.join(work, "colza")
     # Loading stops at the first step whose piston travel reaches max_piston_travel: with
     # travel(k) = v k dt that is step k = steps - 1 (counted from 0), i.e. `steps` steps.
@@ -120,12 +127,20 @@ def run_colza(colza, packing, dt, steps, work, threads):
     cmd = [colza, "run", "oedometer", "--threads", str(threads), "--set", f"oedometer.packing_file={packing}",
            "--set", f"integration.time_step={dt!r}",
            "--set", f"oedometer.max_piston_travel={travel!r}", "--out", out, "--force"]
-    _, err, rss, _ = run_timed(cmd, work, os.path.join(work, "colza.log"))
+    env = dict(os.environ)
+    env.pop("COLZA_ISA", None)
+    if isa:
+        env["COLZA_ISA"] = isa
+    _, err, rss, _ = run_timed(cmd, work, os.path.join(work, "colza.log"), env=env)
     s = json.load(open(os.path.join(out, "summary.json")))
     if s["stop_reason"] != "max_piston_travel":
         sys.exit(f"colza's loading stopped by {s['stop_reason']}, not after the {steps} steps asked: fewer steps")
     stage = next(st for st in s["stages"] if st["name"] == "loading")
-    return dict(code="colza", particles=s["particles"], steps=stage["steps"], seconds=stage["wall_seconds"], rss=rss)
+    # Older colza binaries do not record their force loops' copy or the CPU.
+    kernels = (f"{s['kernel_isa']} copy, built for {s['kernel_isa_built_for']}" if "kernel_isa" in s
+               else "(no kernel_isa in its summary.json: one copy, built before run-time dispatch)")
+    return dict(code=code, particles=s["particles"], steps=stage["steps"], seconds=stage["wall_seconds"], rss=rss,
+                kernels=kernels, report=s.get("kernel_isa_report"), cpu=s.get("cpu_model"))
 
 
 def write_lammps(path_dir, spheres, dt, steps):
@@ -275,8 +290,21 @@ def main():
     ap.add_argument("--skip-yade", action="store_true")
     ap.add_argument("--skip-yade-cohfrict", action="store_true", help="run YADE in its cheapest form only")
     ap.add_argument("--skip-lammps", action="store_true")
+    ap.add_argument("--isa", default="",
+                    help="comma-separated copies of colza's force loops to run besides its own choice, each forced "
+                         "through $COLZA_ISA (generic, avx2, avx512)")
+    ap.add_argument("--also", action="append", default=[], metavar="LABEL=PATH",
+                    help="another colza binary to run on the same loading (repeatable), e.g. native=/tmp/native/colza")
     a = ap.parse_args()
     colza = os.path.abspath(a.colza)
+    # colza rows: (code, binary, forced copy)
+    colza_rows = [("colza", colza, None)]
+    colza_rows += [(f"colza {isa}", colza, isa) for isa in a.isa.split(",") if isa]
+    for also in a.also:
+        label, _, path = also.partition("=")
+        if not path:
+            sys.exit(f"--also {also}: expected LABEL=PATH")
+        colza_rows.append((f"colza {label}", os.path.abspath(path), None))
     os.makedirs(a.work, exist_ok=True)
     packing = os.path.abspath(a.packing) if a.packing else prepare_packing(colza, a.work)
     spheres = read_packing(packing)
@@ -299,9 +327,13 @@ def main():
     runs = {}  # code -> list of rows, one per round
     steps = None
     for k in range(a.repeat):
-        row = run_colza(colza, packing, a.dt, a.steps, a.work, a.threads)
-        runs.setdefault("colza", []).append(row)
-        steps = row["steps"]
+        for code, binary, isa in colza_rows:
+            row = run_colza(binary, packing, a.dt, a.steps, a.work, a.threads, isa=isa, code=code)
+            runs.setdefault(code, []).append(row)
+            if steps is None:
+                steps = row["steps"]
+            elif row["steps"] != steps:
+                sys.exit(f"{code} ran {row['steps']} steps, colza {steps}")
         for code, runner in others:
             runs.setdefault(code, []).append(runner(steps))
         print(f"round {k + 1}/{a.repeat}: " + ", ".join(f"{c} {r[-1]['seconds']:.2f} s" for c, r in runs.items()),
@@ -313,7 +345,13 @@ def main():
     best = {c: max(rs, key=rate) for c, rs in runs.items()}
     median = {c: statistics.median(rate(r) for r in rs) for c, rs in runs.items()}
     print(f"\noedometer loading from {packing}: dt = {a.dt:g} s, {steps} steps, one thread "
-          f"(colza --threads {a.threads}), {a.repeat} interleaved round(s)\n")
+          f"(colza --threads {a.threads}), {a.repeat} interleaved round(s)")
+    first = runs["colza"][0]
+    print(f"CPU: {first['cpu'] or 'not recorded'}")
+    print(f"colza's force loops: {first['report'] or 'not recorded'}")
+    for code, _, _ in colza_rows:
+        print(f"  {code}: {runs[code][0]['kernels']}")
+    print()
     head = (f"{'code':<13} {'particles':>9} {'steps':>7} {'best s':>8} {'Mp-steps/s':>11} {'vs colza':>9} "
             f"{'median Mp/s':>12} {'vs colza':>9} {'peak MB':>8}")
     print(head)
