@@ -5,17 +5,25 @@
 #include <limits>
 #include <stdexcept>
 
+#include "io/format_number.hpp"
+
 namespace colza {
+
+std::string speeds_problem(const std::vector<double>& speeds) {
+  if (speeds.size() < 2) return "a speed series needs at least two speeds (m/s), e.g. --speeds 0.0005,0.005";
+  for (std::size_t k = 0; k < speeds.size(); ++k) {
+    if (!(speeds[k] > 0.0) || !std::isfinite(speeds[k]))
+      return "speed " + format_shortest(speeds[k]) + " is not a positive speed (m/s)";
+    for (std::size_t j = 0; j < k; ++j)
+      if (speeds[j] == speeds[k]) return "speed " + format_shortest(speeds[k]) + " is listed twice";
+  }
+  return "";
+}
 
 std::vector<SpeedTrend> speed_trends(const std::vector<double>& speeds,
                                      const std::vector<std::map<std::string, double>>& features) {
-  if (speeds.size() < 2) throw std::invalid_argument("a speed series needs at least two speeds");
+  if (const std::string why = speeds_problem(speeds); !why.empty()) throw std::invalid_argument(why);
   if (features.size() != speeds.size()) throw std::invalid_argument("one feature set per speed is needed");
-  for (std::size_t k = 0; k < speeds.size(); ++k) {
-    if (!(speeds[k] > 0.0) || !std::isfinite(speeds[k])) throw std::invalid_argument("speeds must be positive");
-    for (std::size_t j = 0; j < k; ++j)
-      if (speeds[j] == speeds[k]) throw std::invalid_argument("speeds must be distinct");
-  }
   const auto slowest = static_cast<std::size_t>(std::min_element(speeds.begin(), speeds.end()) - speeds.begin());
   const auto fastest = static_cast<std::size_t>(std::max_element(speeds.begin(), speeds.end()) - speeds.begin());
   double mean_log = 0.0;

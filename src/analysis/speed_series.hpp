@@ -19,8 +19,12 @@ struct SpeedTrend {
   double relative_change = 0.0;  // (f(v_max) - f(v_min)) / |f(v_min)|
 };
 
-// speeds: > 0 and distinct, at least two; features[k]: the features of the run at speeds[k].
-// Throws std::invalid_argument otherwise, or when the lists' lengths differ.
+// Why `speeds` (m/s) cannot make a series, or "" when they can: at least two, each positive
+// and finite, none listed twice.
+std::string speeds_problem(const std::vector<double>& speeds);
+
+// speeds: as speeds_problem requires; features[k]: the features of the run at speeds[k].
+// Throws std::invalid_argument otherwise (speeds_problem's reason), or when the lists' lengths differ.
 std::vector<SpeedTrend> speed_trends(const std::vector<double>& speeds,
                                      const std::vector<std::map<std::string, double>>& features);
 

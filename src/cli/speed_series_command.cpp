@@ -35,17 +35,6 @@ const char* speed_key(Scenario s) {
   return s == Scenario::kOedometer ? "oedometer.piston_speed" : s == Scenario::kShear ? "shear_box.shear_speed" : "repose.lift_speed";
 }
 
-void validate_speeds(const std::vector<double>& speeds) {
-  if (speeds.size() < 2)
-    throw ConfigError("--speeds", "", "a speed series needs at least two speeds (m/s), e.g. --speeds 0.0005,0.005");
-  for (std::size_t k = 0; k < speeds.size(); ++k) {
-    if (!(speeds[k] > 0.0) || !std::isfinite(speeds[k]))
-      throw ConfigError("--speeds", "", "speed " + format_shortest(speeds[k]) + " is not a positive speed (m/s)");
-    for (std::size_t j = 0; j < k; ++j)
-      if (speeds[j] == speeds[k]) throw ConfigError("--speeds", "", "speed " + format_shortest(speeds[k]) + " is listed twice");
-  }
-}
-
 // The run's largest inertial number: the oedometer's at its largest piston stress, a shear
 // series' at its smallest load, the repose lift's.
 double largest_inertial_number(Scenario s, const RunConfig& c, const nlohmann::json& outputs) {
@@ -87,7 +76,7 @@ void print_trends(const std::vector<double>& speeds, const std::vector<SpeedRun>
 int speed_series_command(const RunOptions& opt) {
   try {
     const Scenario scenario = series_scenario(opt.scenario);
-    validate_speeds(opt.speeds);
+    if (const std::string why = speeds_problem(opt.speeds); !why.empty()) throw ConfigError("--speeds", "", why);
     if (opt.config_path.empty() && scenario != Scenario::kOedometer)
       throw ConfigError("--config", "", "`colza run " + opt.scenario + " --speeds` needs a config file");
     std::vector<std::string> overrides = opt.overrides;
