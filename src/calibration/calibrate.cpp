@@ -184,6 +184,18 @@ double normalised_misfit(const Problem& p, const Eigen::VectorXd& y, const Eigen
   return m;
 }
 
+double ranking_misfit(const Problem& p, const Eigen::VectorXd& y, const Eigen::VectorXd& tolerance) {
+  if (p.ranking == RunRanking::kWorstTarget) return normalised_misfit(p, y, tolerance);
+  Eigen::VectorXd r(static_cast<Eigen::Index>(p.targets.size()));
+  for (std::size_t i = 0; i < p.targets.size(); ++i) {
+    const Eigen::Index k = static_cast<Eigen::Index>(i);
+    r[k] = (y[k] - p.targets[i].value) / tolerance[k];
+  }
+  const double chi_square = p.target_correlation.size() == 0 ? r.squaredNorm()
+                                                             : r.dot(p.target_correlation.ldlt().solve(r));
+  return std::sqrt(chi_square / static_cast<double>(r.size()));
+}
+
 Eigen::VectorXd single_run_tolerance(const Problem& p, const Eigen::VectorXd& scatter) {
   return tolerances(p, scatter, 1);
 }
@@ -388,7 +400,7 @@ CalibrationResult calibrate_sequential(const Problem& p, const ForwardModel& mod
     scatter_warnings(p, r);
   }
   const Eigen::VectorXd tolerance = single_run_tolerance(p, r.scatter);
-  auto misfit = [&](std::size_t k) { return normalised_misfit(p, r.runs[k].y, tolerance); };
+  auto misfit = [&](std::size_t k) { return ranking_misfit(p, r.runs[k].y, tolerance); };
   std::size_t best = pool[0];
   for (std::size_t k : pool)
     if (misfit(k) < misfit(best)) best = k;

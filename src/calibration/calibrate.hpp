@@ -64,6 +64,16 @@ struct Target {
   double uncertainty = 0.0;  // one standard deviation, > 0
 };
 
+// How the sequential search ranks its runs (the best is the trust region's centre and the
+// solution) and when it stops (the best run's misfit <= 1):
+//  kWorstTarget: max_i |y_i - t_i| / tol_i: every target within its tolerance, the
+//    calibration's acceptance;
+//  kRootMeanSquare: sqrt(r^T S^-1 r / n), S = D R D with D = diag(tol) and R the targets'
+//    correlation, r = y - t: the weighted least squares the surrogate's step minimises, and
+//    what a chi-square test judges (the diagnosis). With one target far off, the worst target
+//    ranks runs by that target alone and leaves the others where its error is least.
+enum class RunRanking { kWorstTarget, kRootMeanSquare };
+
 struct Problem {
   std::vector<Parameter> parameters;
   std::vector<Target> targets;
@@ -71,6 +81,7 @@ struct Problem {
   std::vector<Eigen::VectorXd> sequential_start;  // sequential mode: empty = centre + one step per parameter
   SurfaceKind surface = SurfaceKind::kAuto;
   int max_runs = 12;                              // sequential mode budget (design + refinement runs)
+  RunRanking ranking = RunRanking::kWorstTarget;  // sequential mode: how runs are ranked and when the search stops
   int replicates = 0;                             // extra realisations (seeds) to measure the scatter; 0 = off, else >= 2
   // Correlation of the measured targets' errors (targets x targets; empty: independent).
   // Targets derived from one fit are correlated: C and tan(Phi) from one line through the
@@ -162,6 +173,8 @@ CalibrationResult calibrate_sequential(const Problem& problem, const ForwardMode
 double normalised_misfit(const Problem& problem, const Eigen::VectorXd& y);
 // Same against a tolerance per target.
 double normalised_misfit(const Problem& problem, const Eigen::VectorXd& y, const Eigen::VectorXd& tolerance);
+// The misfit `problem.ranking` ranks runs by (RunRanking), against a tolerance per target.
+double ranking_misfit(const Problem& problem, const Eigen::VectorXd& y, const Eigen::VectorXd& tolerance);
 // What one run's error is judged against: sqrt(u_i^2 + s_i^2), or u_i when `scatter` is empty.
 Eigen::VectorXd single_run_tolerance(const Problem& problem, const Eigen::VectorXd& scatter);
 

@@ -71,7 +71,10 @@ std::vector<Eigen::VectorXd> realisations(CountingModel& model, const ModelPoint
 
 // The calibration problem over `parameters`, the features as targets with the noise `sd`
 // (measurement and realisation scatter) as their uncertainty, so that the solver weighs
-// features by what a run can resolve.
+// features by what a run can resolve. Runs are ranked by their root-mean-square misfit, the
+// chi-square the fit is then judged by: ranked by the worst feature, a baseline that cannot
+// fit one feature would be left where that feature's error is least, not where the data as a
+// whole put it, and the refit's linearisation would have to carry the rest.
 calibration::Problem calibration_problem(const DiagnosisProblem& p, const std::vector<Parameter>& parameters,
                                          const Eigen::VectorXd& sd, std::vector<Eigen::VectorXd> start) {
   calibration::Problem c;
@@ -80,6 +83,7 @@ calibration::Problem calibration_problem(const DiagnosisProblem& p, const std::v
     c.targets.push_back({p.features[i].name, p.features[i].unit, p.features[i].measured, sd[static_cast<Eigen::Index>(i)]});
   c.target_correlation = p.measured_correlation;
   c.surface = calibration::SurfaceKind::kPlane;
+  c.ranking = calibration::RunRanking::kRootMeanSquare;
   c.max_runs = std::max(p.settings.calibration_runs, static_cast<int>(parameters.size()) + 2);
   c.sequential_start = std::move(start);
   return c;
@@ -209,35 +213,84 @@ Eigen::MatrixXd measure_sensitivities(const DiagnosisProblem& p, CountingModel& 
   return J;
 }
 
-// Step 2: every candidate's signature at the fit (its neutral and probe values, realisations
-// 1..n of each) and the score tests against the residual.
-void measure_signatures(const DiagnosisProblem& p, CountingModel& model, DiagnosisResult& out) {
-  const int n = std::min(p.settings.signature_seeds, p.settings.replicates);
-  const Eigen::VectorXd& x = out.baseline.parameters;
-  std::vector<std::pair<ModelPoint, int>> jobs;
-  for (std::size_t k = 0; k < p.candidates.size(); ++k) {
-    const Candidate& c = p.candidates[k];
-    for (int s = 1; s <= n; ++s) jobs.emplace_back(ModelPoint{x, static_cast<int>(k), c.neutral()}, s);
-    for (int s = 1; s <= n; ++s) jobs.emplace_back(ModelPoint{x, static_cast<int>(k), c.probe}, s);
-  }
-  const std::vector<Eigen::VectorXd> ys = model.batch(jobs);
-  std::vector<double> ranges;
-  for (std::size_t k = 0; k < p.candidates.size(); ++k) {
-    const Candidate& c = p.candidates[k];
-    const auto first = ys.begin() + static_cast<std::ptrdiff_t>(2 * k * static_cast<std::size_t>(n));
-    out.signatures.push_back(signature_from_pairs({first, first + n}, {first + n, first + 2 * n}, c.probe - c.neutral()));
-    ranges.push_back(c.parameter.upper - c.neutral());
-  }
-  // The residual the candidates must explain is the refit's: what the baseline's parameters
-  // cannot absorb inside their ranges. A parameter the refit holds at a bound can absorb no
-  // more in the direction the data ask for, so only the others' sensitivities are projected out.
-  const Fit& b = out.baseline;
+// The score tests of the signatures in `d` against the refit's residual: what the baseline's
+// parameters cannot absorb inside their ranges. A parameter the refit holds at a bound can
+// absorb no more in the direction the data ask for, so only the others' sensitivities are
+// projected out.
+ScoreTests score_against_refit(const DiagnosisProblem& p, const DiagnosisResult& d) {
+  const Fit& b = d.baseline;
   std::vector<Eigen::Index> free;
   for (std::size_t j = 0; j < b.held_at_bound.size(); ++j)
     if (!b.held_at_bound[j]) free.push_back(static_cast<Eigen::Index>(j));
-  const Eigen::MatrixXd absorbable = out.baseline_sensitivity(Eigen::all, free);
-  out.scores = score_candidates(b.noise, absorbable, out.signatures, ranges,
-                                measured_values(p) - b.mean_features - out.baseline_sensitivity * b.refit_shift);
+  std::vector<double> ranges;
+  for (const Candidate& c : p.candidates) ranges.push_back(c.parameter.upper - c.neutral());
+  return score_candidates(b.noise, d.baseline_sensitivity(Eigen::all, free), d.signatures, ranges,
+                          measured_values(p) - b.mean_features - d.baseline_sensitivity * b.refit_shift);
+}
+
+// Every candidate's runs at its neutral and probe values at the baseline's fit, realisation
+// by realisation (common random numbers).
+class SignaturePairs {
+ public:
+  SignaturePairs(const DiagnosisProblem& p, const Eigen::VectorXd& fit)
+      : p_(p), fit_(fit), neutral_(p.candidates.size()), probe_(p.candidates.size()) {}
+  int seeds(std::size_t k) const { return static_cast<int>(neutral_[k].size()); }
+  // Queues realisations seeds(k) + 1 .. last of candidate k.
+  void queue(std::size_t k, int last) {
+    const Candidate& c = p_.candidates[k];
+    for (int s = seeds(k) + 1 + queued_of(k); s <= last; ++s) {
+      jobs_.emplace_back(ModelPoint{fit_, static_cast<int>(k), c.neutral()}, s);
+      jobs_.emplace_back(ModelPoint{fit_, static_cast<int>(k), c.probe}, s);
+      owner_.push_back(k);
+    }
+  }
+  // Runs what is queued; false when nothing was.
+  bool run(CountingModel& model) {
+    if (jobs_.empty()) return false;
+    const std::vector<Eigen::VectorXd> ys = model.batch(jobs_);
+    for (std::size_t i = 0; i < owner_.size(); ++i) {
+      neutral_[owner_[i]].push_back(ys[2 * i]);
+      probe_[owner_[i]].push_back(ys[2 * i + 1]);
+    }
+    jobs_.clear();
+    owner_.clear();
+    return true;
+  }
+  Signature signature(std::size_t k) const {
+    const Candidate& c = p_.candidates[k];
+    return signature_from_pairs(neutral_[k], probe_[k], c.probe - c.neutral());
+  }
+
+ private:
+  int queued_of(std::size_t k) const { return static_cast<int>(std::count(owner_.begin(), owner_.end(), k)); }
+  const DiagnosisProblem& p_;
+  Eigen::VectorXd fit_;
+  std::vector<std::vector<Eigen::VectorXd>> neutral_, probe_;
+  std::vector<std::pair<ModelPoint, int>> jobs_;
+  std::vector<std::size_t> owner_;
+};
+
+// Step 2: every candidate's signature at the fit from signature_seeds pairs, and the score
+// tests. A signature whose signal-to-noise under the projection (score_test.hpp) stays below
+// settings.signature_signal_to_noise, or is unknown (one pair), gets its pairs doubled up to
+// settings.signature_seeds_max: its standard error shrinks as 1/sqrt(pairs).
+void measure_signatures(const DiagnosisProblem& p, CountingModel& model, DiagnosisResult& out) {
+  const std::size_t nc = p.candidates.size();
+  const int most = std::max(p.settings.signature_seeds, p.settings.signature_seeds_max);
+  SignaturePairs pairs(p, out.baseline.parameters);
+  for (std::size_t k = 0; k < nc; ++k) pairs.queue(k, p.settings.signature_seeds);
+  while (pairs.run(model)) {
+    out.signatures.clear();
+    for (std::size_t k = 0; k < nc; ++k) out.signatures.push_back(pairs.signature(k));
+    out.scores = score_against_refit(p, out);
+    if (!(p.settings.signature_signal_to_noise > 0.0)) break;
+    for (std::size_t k = 0; k < nc; ++k) {
+      const bool unknown = pairs.seeds(k) < 2;
+      if ((unknown || out.scores.scores[k].signal_to_noise < p.settings.signature_signal_to_noise) &&
+          pairs.seeds(k) < most)
+        pairs.queue(k, std::min(2 * pairs.seeds(k), most));
+    }
+  }
 }
 
 // Where the extended search starts when the baseline's fit is a poor start: the joint
@@ -395,6 +448,11 @@ void validate_diagnosis(const DiagnosisProblem& p) {
   if (s.replicates < 2) throw CalibrationError("replicates", "needs at least 2 realisations to measure the scatter");
   if (s.signature_seeds < 1 || s.signature_seeds > s.replicates)
     throw CalibrationError("signature_seeds", "must lie between 1 and replicates (" + std::to_string(s.replicates) + ")");
+  if (s.signature_seeds_max < s.signature_seeds)
+    throw CalibrationError("signature_seeds_max", "must not be below signature_seeds (" +
+                                                      std::to_string(s.signature_seeds) + ")");
+  if (!(s.signature_signal_to_noise >= 0.0))
+    throw CalibrationError("signature_signal_to_noise", "must be >= 0 (0: never add pairs)");
   if (!(s.significance > 0.0 && s.significance < 0.5)) throw CalibrationError("significance", "must lie in (0, 0.5)");
   if (!(s.ambiguity_cosine > 0.0 && s.ambiguity_cosine < 1.0))
     throw CalibrationError("ambiguity_cosine", "must lie in (0, 1)");

@@ -57,7 +57,12 @@ using DiagnosisForward = std::function<Eigen::VectorXd(const ModelPoint&, int re
 
 struct DiagnosisSettings {
   int replicates = 8;               // R realisations at each fit (>= 2; >= 8 recommended)
-  int signature_seeds = 4;          // common-random-number pairs per signature and sensitivity
+  int signature_seeds = 4;          // common-random-number pairs per sensitivity, and per signature at first
+  // A signature measured to a signal-to-noise (score_test.hpp) below the target gets more pairs,
+  // doubling up to signature_seeds_max: how far a signature's direction can be trusted decides
+  // both its score and whether two candidates look alike. 0: never add pairs.
+  double signature_signal_to_noise = 3.0;
+  int signature_seeds_max = 8;
   double significance = 0.01;       // alpha of every test
   double ambiguity_cosine = 0.9;    // |cos| of two projected signatures above which the data cannot tell them apart
   int calibration_runs = 12;        // budget of each calibration's sequential search

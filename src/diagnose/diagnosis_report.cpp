@@ -86,6 +86,7 @@ nlohmann::json diagnosis_summary(const DiagnosisProblem& p, const DiagnosisResul
       const CandidateScore& s = d.scores.scores[k];
       e["signature"] = vec(d.signatures[k].mean);
       e["signature_standard_error"] = vec(d.signatures[k].standard_error);
+      e["signature_seeds"] = d.signatures[k].seeds;
       e["score"] = {{"z", s.z}, {"p_value", s.p_value}, {"adjusted_p", s.adjusted_p},
                     {"absorbed_fraction", s.absorbed_fraction}, {"alignment", s.alignment},
                     {"linear_estimate", s.estimate}, {"linear_estimate_sd", s.estimate_sd},
@@ -159,12 +160,13 @@ std::string diagnosis_report(const DiagnosisProblem& p, const DiagnosisResult& d
     o << "## 2. Candidates\n\nEach candidate's signature (d feature / d parameter from its neutral value, common random "
          "numbers), the part the baseline's own parameters cannot absorb, and the one-sided score test against the "
          "residual (adjusted by max-T over " << p.candidates.size() << " candidates, their null correlations the projected signatures' cosines).\n\n";
-    o << "| candidate | z | p (adjusted) | absorbed by the baseline | alignment with residual | linear estimate | reach (noise units) |\n|---|---|---|---|---|---|---|\n";
+    o << "| candidate | z | p (adjusted) | absorbed by the baseline | alignment with residual | linear estimate | reach (noise units) | signature: signal / error (pairs) |\n|---|---|---|---|---|---|---|---|\n";
     for (std::size_t k = 0; k < p.candidates.size(); ++k) {
       const CandidateScore& s = d.scores.scores[k];
       o << "| " << p.candidates[k].name << " | " << fmt(s.z) << " | " << fmt(s.adjusted_p) << " | "
         << fmt(100.0 * s.absorbed_fraction) << " % | " << fmt(s.alignment) << " | " << fmt(p.candidates[k].neutral() + s.estimate)
-        << " +/- " << fmt(s.estimate_sd) << " | " << fmt(s.reach) << " |\n";
+        << " +/- " << fmt(s.estimate_sd) << " | " << fmt(s.reach) << " | " << fmt(s.signal_to_noise) << " ("
+        << d.signatures[k].seeds << ") |\n";
     }
     o << "\nCosines of the projected signatures (near 1: these data cannot tell the two apart):\n\n|  |";
     for (const auto& c : p.candidates) o << " " << c.name << " |";

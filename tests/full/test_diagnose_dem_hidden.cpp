@@ -1,6 +1,9 @@
 // `colza diagnose` on small DEM samples with an effect hidden in the data (label full; the
 // acceptance cases of issue 40): each case on three data seeds (data seed s: the mean of the
-// truth's realisations 1000 + 3 (s - 1) + 1..3, seeds the diagnosis never uses). COLZA_DIAGNOSE_KEEP=<folder> keeps each case's
+// truth's realisations 1000 + 3 (s - 1) + 1..3, seeds the diagnosis never uses). The lab set
+// is an oedometer with a load-unload cycle, a shear test and an angle of repose test: without
+// the repose test, friction absorbs rolling resistance and the data cannot show it (the
+// diagnosis then says so). COLZA_DIAGNOSE_KEEP=<folder> keeps each case's
 // data, runs and report in <folder>/<case>-<seed> (a second run reuses every finished run);
 // COLZA_DIAGNOSE_SEEDS=1,4 runs those data seeds instead.
 #include <gtest/gtest.h>
@@ -19,7 +22,7 @@ nlohmann::json run_case(const ScratchDir& scratch, const std::string& name, cons
   std::filesystem::path dir = scratch.path() / std::to_string(seed);
   if (const char* keep = std::getenv("COLZA_DIAGNOSE_KEEP")) dir = std::filesystem::path(keep) / (name + "-" + std::to_string(seed));
   std::filesystem::create_directories(dir);
-  return diagnose_small(hidden, seed, dir, 8);
+  return diagnose_small(hidden, seed, dir, 8, SmallLab{true});
 }
 
 // The data seeds: COLZA_DIAGNOSE_SEEDS (comma-separated) or `standard`.

@@ -30,28 +30,38 @@ namespace colza::testing {
 // them is rearrangement, which scatters by half between packings of 170 spheres).
 // Its features and a lab's repeatability as their measurement uncertainty, well under the
 // realisation scatter measured on six seeds (sd: bulk density 15 kg/m^3, rebound strain
-// 4.2e-4, unloading modulus 1.1 MPa, K 0.063, C 1.7 kPa, tan(Phi) 0.024).
+// 4.2e-4, unloading modulus 1.1 MPa, K 0.063, C 1.7 kPa, tan(Phi) 0.024). A lab set may add
+// tests/data/small_repose.toml with the same particles (the angle of repose to 1 deg; it
+// scatters by 2-3 deg between packings of ~600 spheres): the test that tells rolling
+// resistance from friction (physics.md section 8; at friction 0.2 on seeds 1-3 the angle is
+// 29.1 deg at mu_r = 0, 33.7 at mu_r = 0.18 and 29.6 at friction 0.3 without it).
 struct SmallFeature {
   const char* test;
   const char* name;
   double uncertainty;
 };
-inline const std::vector<SmallFeature>& small_features() {
-  static const std::vector<SmallFeature> f = {{"oedometer", "bulk_density", 2.0},
-                                              {"oedometer", "cycle1/rebound_strain", 1e-4},
-                                              {"oedometer", "branch2/modulus@20000Pa", 3e5},
-                                              {"oedometer", "branch1/lateral_ratio_end", 0.01},
-                                              {"shear", "cohesion", 300.0},
-                                              {"shear", "tan_phi", 0.01}};
+// Which lab tests the small set has.
+struct SmallLab {
+  bool repose = false;
+};
+inline std::vector<SmallFeature> small_features(SmallLab lab = {}) {
+  std::vector<SmallFeature> f = {{"oedometer", "bulk_density", 2.0},
+                                 {"oedometer", "cycle1/rebound_strain", 1e-4},
+                                 {"oedometer", "branch2/modulus@20000Pa", 3e5},
+                                 {"oedometer", "branch1/lateral_ratio_end", 0.01},
+                                 {"shear", "cohesion", 300.0},
+                                 {"shear", "tan_phi", 0.01}};
+  if (lab.repose) f.push_back({"repose", "angle_of_repose_deg", 1.0});
   return f;
 }
 
 // A lab reports each test's values as the mean of three samples (its `samples` in the spec).
 constexpr int kLabSamples = 3;
 
-// The spec, each feature's measured value from `value(k)` (k: index in small_features()).
-inline std::string small_spec(int replicates, const std::function<double(std::size_t)>& value) {
+// The spec, each feature's measured value from `value(k)` (k: index in small_features(lab)).
+inline std::string small_spec(int replicates, const std::function<double(std::size_t)>& value, SmallLab lab = {}) {
   const std::string data = std::string(COLZA_SOURCE_DIR) + "/tests/data/";
+  const std::vector<SmallFeature> features = small_features(lab);
   std::ostringstream s;
   s << "title = \"small samples\"\n"
     << "[settings]\nreplicates = " << replicates << "\nsignature_seeds = 3\ncalibration_runs = 12\nextend_at_most = 2\n"
@@ -60,10 +70,10 @@ inline std::string small_spec(int replicates, const std::function<double(std::si
     << "[[candidates]]\nname = \"elasto_plastic\"\n"
     << "[[candidates]]\nname = \"load_induced_cohesion\"\n";
   const auto features_of = [&](const std::string& test) {
-    for (std::size_t k = 0; k < small_features().size(); ++k)
-      if (small_features()[k].test == test)
-        s << "[[tests.features]]\nname = \"" << small_features()[k].name << "\"\nvalue = "
-          << format_significant(value(k), 17) << "\nuncertainty = " << small_features()[k].uncertainty << "\n";
+    for (std::size_t k = 0; k < features.size(); ++k)
+      if (features[k].test == test)
+        s << "[[tests.features]]\nname = \"" << features[k].name << "\"\nvalue = "
+          << format_significant(value(k), 17) << "\nuncertainty = " << features[k].uncertainty << "\n";
   };
   s << "[[tests]]\nname = \"oedometer\"\nscenario = \"oedometer\"\nconfig = \"" << data << "small_oedometer.toml\"\n"
     << "set = [\"oedometer.cycles=[40e3, 0.0]\", \"oedometer.record_interval=5\"]\nsamples = " << kLabSamples << "\n";
@@ -72,6 +82,11 @@ inline std::string small_spec(int replicates, const std::function<double(std::si
     << "set = [\"contact.bond=none\", \"contact.bond_install=never\", \"particle.normal_stiffness=437e3\", "
     << "\"shear_box.preconsolidation_stress=78.75e3\"]\nsamples = " << kLabSamples << "\n";
   features_of("shear");
+  if (lab.repose) {
+    s << "[[tests]]\nname = \"repose\"\nscenario = \"repose\"\nconfig = \"" << data << "small_repose.toml\"\n"
+      << "set = [\"particle.normal_stiffness=437e3\", \"particle.density=1250\"]\nsamples = " << kLabSamples << "\n";
+    features_of("repose");
+  }
   return s.str();
 }
 
@@ -86,10 +101,10 @@ struct HiddenEffect {
 // kLabSamples realisations, 1000 + kLabSamples (data_seed - 1) + 1, 2, ..., run in
 // `data_runs`, apart from the diagnosis's runs.
 inline Eigen::VectorXd small_truth_features(const HiddenEffect& hidden, int data_seed,
-                                            const std::filesystem::path& data_runs) {
+                                            const std::filesystem::path& data_runs, SmallLab lab = {}) {
   std::filesystem::create_directories(data_runs);
   const std::filesystem::path spec_file = data_runs / "truth-spec.toml";
-  write_file(spec_file, small_spec(3, [](std::size_t) { return 0.0; }));
+  write_file(spec_file, small_spec(3, [](std::size_t) { return 0.0; }, lab));
   diagnose::DiagnosisSpec spec = diagnose::read_diagnosis_spec(spec_file.string());
   for (auto& t : spec.tests) t.set.insert(t.set.end(), hidden.other_settings.begin(), hidden.other_settings.end());
   diagnose::ModelPoint truth{Eigen::VectorXd::Constant(1, 0.2)};
@@ -111,10 +126,10 @@ inline Eigen::VectorXd small_truth_features(const HiddenEffect& hidden, int data
 // Makes the data, writes the spec into `dir`, runs `colza diagnose` there (--jobs 2) and
 // returns its summary.json.
 inline nlohmann::json diagnose_small(const HiddenEffect& hidden, int data_seed, const std::filesystem::path& dir,
-                                     int replicates = 6) {
-  const Eigen::VectorXd m = small_truth_features(hidden, data_seed, dir / "data-runs");
+                                     int replicates = 6, SmallLab lab = {}) {
+  const Eigen::VectorXd m = small_truth_features(hidden, data_seed, dir / "data-runs", lab);
   const std::filesystem::path spec = dir / "spec.toml";
-  write_file(spec, small_spec(replicates, [&](std::size_t k) { return m[static_cast<Eigen::Index>(k)]; }));
+  write_file(spec, small_spec(replicates, [&](std::size_t k) { return m[static_cast<Eigen::Index>(k)]; }, lab));
   const CliResult r = run_colza("diagnose --spec " + spec.string() + " --out " + (dir / "out").string() +
                                 " --runs " + (dir / "runs").string() + " --jobs 2 --threads 1 --quiet --force");
   EXPECT_EQ(r.exit_code, 0) << r.stderr_text;

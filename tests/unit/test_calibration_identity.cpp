@@ -132,6 +132,28 @@ TEST(CalibrationIdentity, OneParameterDensityLine) {
   EXPECT_LE(s.runs.size(), 3u);
 }
 
+TEST(CalibrationIdentity, RunsRankedByTheirRootMeanSquareMisfitEndAtTheLeastSquaresFit) {
+  // Three targets of one parameter x in [0, 1], all measured 0.3 +/- 0.01: y1 = y2 = x and
+  // y3 = 5 - 0.1 x, which no x brings near. Least squares: d/dx [2 (x - 0.3)^2 + (4.7 - 0.1 x)^2]
+  // = 0 at x = (1.2 + 0.94) / 4.02 = 0.5323; the worst target (y3) is least at x = 1.
+  Problem p;
+  p.parameters = {{"x", "x", "-", 0.0, 1.0}};
+  p.targets = {{"y1", "-", 0.3, 0.01}, {"y2", "-", 0.3, 0.01}, {"y3", "-", 0.3, 0.01}};
+  p.max_runs = 8;
+  const ForwardModel m = [](const Eigen::VectorXd& x) { return Eigen::Vector3d(x[0], x[0], 5.0 - 0.1 * x[0]).eval(); };
+  const Eigen::VectorXd tolerance = Eigen::Vector3d::Constant(0.01);
+  // sqrt((2 (0.2)^2 + 4.65^2) / 3) / 0.01 at x = 0.5; the worst target alone: 4.65 / 0.01.
+  EXPECT_NEAR(normalised_misfit(p, m(Eigen::VectorXd::Constant(1, 0.5)), tolerance), 465.0, 1e-9);
+  p.ranking = RunRanking::kRootMeanSquare;
+  EXPECT_NEAR(ranking_misfit(p, m(Eigen::VectorXd::Constant(1, 0.5)), tolerance),
+              std::sqrt((2.0 * 0.04 + 4.65 * 4.65) / 3.0) / 0.01, 1e-9);
+  const CalibrationResult rms = calibrate_sequential(p, m, {});
+  EXPECT_NEAR(rms.solution[0], 2.14 / 4.02, 0.02);
+  p.ranking = RunRanking::kWorstTarget;
+  const CalibrationResult worst = calibrate_sequential(p, m, {});
+  EXPECT_GT(worst.solution[0], rms.solution[0] + 0.15);  // toward x = 1, where y3 is least wrong
+}
+
 TEST(CalibrationIdentity, ASolutionOnABoundSaysSo) {
   // The same line with 680 +/- 15 kg/m^3: the line meets it at rho_p = (680 - 0.3) / 0.52 =
   // 1307.1, past the bound 1300, where it gives 676.3, within the uncertainty; so the

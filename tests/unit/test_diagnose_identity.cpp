@@ -61,6 +61,7 @@ struct World {
   int hidden = -1;              // candidate hidden in the data (-1: none)
   double hidden_strength = 0.0;
   Vec out_of_list = Vec::Zero();  // added to the data as is
+  double chaos = 0.31;            // the part of the scatter that changes with the point (relative)
 
   Vec base(const Eigen::VectorXd& t) const {
     const double a = t[0], b = t[1];
@@ -77,7 +78,7 @@ struct World {
     if (x.candidate >= 0) y += (x.strength + 0.3 * x.strength * x.strength) * signatures[static_cast<std::size_t>(x.candidate)];
     const std::uint64_t point = static_cast<std::uint64_t>(std::llround(1e6 * (x.baseline.sum() + x.strength + 7 * x.candidate)));
     for (int i = 0; i < kFeatures; ++i)
-      y[i] += kScatter * (0.95 * gauss(static_cast<std::uint64_t>(k), i) + 0.31 * gauss(static_cast<std::uint64_t>(k) ^ point, 100 + i));
+      y[i] += kScatter * (0.95 * gauss(static_cast<std::uint64_t>(k), i) + chaos * gauss(static_cast<std::uint64_t>(k) ^ point, 100 + i));
     return y;
   }
   Eigen::VectorXd scaled(const Vec& unit) const {
@@ -223,4 +224,31 @@ TEST(DiagnoseIdentity, TheGainIsMeasured) {
   EXPECT_NEAR(found, w.hidden_strength, std::max(3.0 * sd, 0.02)) << "sd " << sd;
   EXPECT_GT(d.forward_runs, 20);
   ASSERT_EQ(d.held_out.size(), 4u);  // compression, shear, cycle, repose
+}
+
+TEST(DiagnoseIdentity, ASignatureMeasuredUnclearlyGetsMorePairs) {
+  // Most of the scatter changes with the point (chaos 5 against a common 0.95), so two pairs
+  // measure a signature to a signal-to-noise near 1-2; the effect is at its top strength (about
+  // 10 noise units), so that the baseline fails and the signatures are measured.
+  World w = world_with(0, kRolling);
+  w.chaos = 5.0;
+  w.hidden_strength = 1.0;
+  DiagnosisProblem p = problem(w, 1, three_candidates());
+  p.settings.signature_seeds = 2;
+  p.settings.signature_seeds_max = 8;
+  p.settings.extend_at_most = 0;
+  const DiagnosisResult adaptive = run(w, p);
+  ASSERT_EQ(adaptive.signatures.size(), 3u) << adaptive.verdict.text;
+  int added = 0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const int seeds = adaptive.signatures[k].seeds;
+    EXPECT_TRUE(seeds == 8 || adaptive.scores.scores[k].signal_to_noise >= 3.0) << "candidate " << k;
+    EXPECT_TRUE(seeds == 2 || seeds == 4 || seeds == 8) << "doubling from 2 up to 8, got " << seeds;
+    added += seeds - 2;
+  }
+  EXPECT_GT(added, 0);
+  p.settings.signature_signal_to_noise = 0.0;
+  const DiagnosisResult fixed = run(w, p);
+  for (const Signature& s : fixed.signatures) EXPECT_EQ(s.seeds, 2);
+  EXPECT_EQ(adaptive.forward_runs - fixed.forward_runs, 2 * added);
 }
