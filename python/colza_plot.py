@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Plots of a colza result directory into DIR/plots/ (PNG): `colza plot DIR` and every run
 call it. What it draws depends on the result (summary.json): an oedometer run, a shear
-load or series, a calibration (then report.md gets a Plots section) or a diagnosis.
+load or series, an angle of repose run, a calibration (then report.md gets a Plots
+section) or a diagnosis.
 
 Exit status: 0 plots written (or none for this kind of result), 3 the plotting stack
 (numpy, matplotlib) is missing, 2 DIR is not a colza result, 1 anything else."""
@@ -25,7 +26,7 @@ def kind_of(summary):
 
 
 def draw(result_dir, out_dir, measured_shear):
-    from colzaplot import calibration, common, diagnosis, oedometer, shear
+    from colzaplot import calibration, common, diagnosis, oedometer, repose, shear
 
     summary = common.read_json(os.path.join(result_dir, "summary.json"))
     kind = kind_of(summary)
@@ -35,6 +36,8 @@ def draw(result_dir, out_dir, measured_shear):
         return kind, shear.plot_single(result_dir, out_dir)
     if kind == "shear-series":
         return kind, shear.plot_series(result_dir, out_dir, measured_shear)
+    if kind == "repose":
+        return kind, repose.plot(result_dir, out_dir)
     if kind == "calibration":
         return kind, calibration.plot(result_dir, out_dir, summary)
     if kind == "diagnosis":

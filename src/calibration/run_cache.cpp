@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <sstream>
 #include <toml++/toml.h>
 #include <unistd.h>
@@ -342,6 +343,22 @@ RunRecord RunCache::run(const RunRequest& request) {
   rec.wall_seconds = wall;
   rec.made_by = git_revision();
   return rec;
+}
+
+std::string runs_by_another_revision_warning(const std::vector<std::pair<std::string, std::string>>& reused,
+                                             const fs::path& runs_dir) {
+  constexpr std::size_t kNamed = 10;  // runs named; the others counted
+  std::set<std::string> listed;
+  std::string named;
+  for (const auto& [id, made_by] : reused) {
+    if (made_by == git_revision() || !listed.insert(id).second) continue;
+    if (listed.size() <= kNamed) named += (named.empty() ? "" : ", ") + id + " (" + made_by + ")";
+  }
+  if (listed.empty()) return "";
+  if (listed.size() > kNamed) named += " and " + std::to_string(listed.size() - kNamed) + " more";
+  return "reused runs made by another revision of colza than this one (" + std::string(git_revision()) +
+         "): " + named + "; they stand only if the physics did not change in between: remove them from " +
+         runs_dir.string() + " to run them again";
 }
 
 }  // namespace colza::calibration

@@ -68,6 +68,14 @@ std::string shear_curve_file_name(double sigma);
 // (file_contents_line of the packing file the configuration names).
 std::string sample_fingerprint(const RunConfig& config, const std::string& packing_line);
 
+// One warning about the reused runs another revision of colza made: a run's fingerprint holds
+// its configuration, not the code, so they stand only if the physics did not change in
+// between. `reused`: (run id, the revision that made it) of each reused run, repeats allowed.
+// Revisions compare as strings ("unknown" for runs older than the field; a "-dirty" build
+// equals another). "" when this revision made every one.
+std::string runs_by_another_revision_warning(const std::vector<std::pair<std::string, std::string>>& reused,
+                                             const std::filesystem::path& runs_dir);
+
 class RunCache {
  public:
   // `verbose`: one line per shared packing and shear sample settled.

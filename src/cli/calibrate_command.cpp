@@ -79,20 +79,14 @@ int input_errors_to_exit_code(const CalibrateOptions& opt, const Spec& spec, Ste
 }
 
 // Warnings about the DEM runs: those the model noted (a peak at a curve's end), and the
-// reused runs another revision of colza made (a run's fingerprint holds its config, not the
-// code: they stand only if the physics did not change in between). Revisions are compared
-// as strings ("unknown" for runs older than the field; a "-dirty" build equals another).
+// reused runs another revision of colza made (calibration/run_cache.hpp).
 std::vector<std::string> warnings_about_runs(const DemModel& dem, const fs::path& runs) {
   std::vector<std::string> w = dem.warnings();
-  std::set<std::string> listed;
-  std::string other;
+  std::vector<std::pair<std::string, std::string>> reused;
   for (const auto& rec : dem.records())
-    if (rec.reused && rec.made_by != git_revision() && listed.insert(rec.id).second)
-      other += (other.empty() ? "" : ", ") + rec.id + " (" + rec.made_by + ")";
-  if (!other.empty())
-    w.push_back("reused runs made by another revision of colza than this one (" + std::string(git_revision()) +
-                "): " + other + "; they stand only if the physics did not change in between: remove them from " +
-                runs.string() + " to run them again");
+    if (rec.reused) reused.emplace_back(rec.id, rec.made_by);
+  if (std::string other = calibration::runs_by_another_revision_warning(reused, runs); !other.empty())
+    w.push_back(std::move(other));
   return w;
 }
 

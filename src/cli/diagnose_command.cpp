@@ -109,6 +109,10 @@ int diagnose_command(const DiagnoseOptions& opt) {
   ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ctx.notes.push_back("DEM runs: " + std::to_string(dem.runs()) + " test runs (" + std::to_string(dem.reused_runs()) +
                       " reused from " + runs.string() + ")");
+  if (std::string other = calibration::runs_by_another_revision_warning(dem.reused_revisions(), runs); !other.empty()) {
+    std::fprintf(stderr, "colza: warning: %s\n", other.c_str());
+    result.warnings.push_back(std::move(other));
+  }
   OutputStaging staging(out, /*overwrite=*/true);  // an earlier result was refused above unless --force
   std::vector<std::string> configs;
   write_model_configs(staging, spec, dem, "baseline", point_of(result.baseline, spec.parameters.size(), -1), configs);

@@ -42,7 +42,11 @@ Eigen::VectorXd DemForward::operator()(const ModelPoint& x, int realisation) {
     request.label = "diagnosis test " + test.name;
     const calibration::RunRecord run = cache_.run(request);
     ++runs_;
-    if (run.reused) ++reused_;
+    if (run.reused) {
+      ++reused_;
+      const std::lock_guard<std::mutex> lock(reused_mutex_);
+      reused_revisions_.emplace_back(run.id, run.made_by);
+    }
     std::string fingerprint, packing;
     const calibration::Features f = calibration::run_features_of(
         run.outputs, run.dir, test.scenario, cache_.config_for(request, fingerprint, packing));
@@ -61,6 +65,11 @@ Eigen::VectorXd DemForward::operator()(const ModelPoint& x, int realisation) {
     }
   }
   return Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
+}
+
+std::vector<std::pair<std::string, std::string>> DemForward::reused_revisions() const {
+  const std::lock_guard<std::mutex> lock(reused_mutex_);
+  return reused_revisions_;
 }
 
 }  // namespace colza::diagnose

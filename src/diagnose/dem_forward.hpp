@@ -8,7 +8,9 @@
 #pragma once
 #include <Eigen/Dense>
 #include <atomic>
+#include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "calibration/run_cache.hpp"
@@ -24,12 +26,16 @@ class DemForward {
   std::vector<std::string> overrides(const DiagnosisTest& test, const ModelPoint& point) const;
   int reused_runs() const { return reused_.load(); }
   int runs() const { return runs_.load(); }
+  // (run id, the revision that made it) of every reused run, in no particular order.
+  std::vector<std::pair<std::string, std::string>> reused_revisions() const;
 
  private:
   const DiagnosisSpec& spec_;
   calibration::RunCache& cache_;
   bool verbose_;
   std::atomic<int> runs_{0}, reused_{0};
+  mutable std::mutex reused_mutex_;
+  std::vector<std::pair<std::string, std::string>> reused_revisions_;
 };
 
 }  // namespace colza::diagnose

@@ -6,6 +6,7 @@
 
 #include "calibration/run_cache.hpp"
 #include "calibration/run_features.hpp"
+#include "core/version.hpp"
 #include "io/fingerprint.hpp"
 
 #include "cli_runner.hpp"
@@ -60,3 +61,17 @@ TEST(RunCache, ARunIsMadeOnceThenReusedAndAnotherSeedIsAnotherRun) {
 }
 
 }  // namespace
+
+TEST(RunCache, ReusedRunsOfAnotherRevisionAreNamedInOneWarning) {
+  const std::string here = git_revision();
+  EXPECT_EQ(runs_by_another_revision_warning({{"a1", here}, {"a2", here}}, "runs"), "");
+  const std::string one = runs_by_another_revision_warning({{"a1", here}, {"b1", "0123abc"}, {"b1", "0123abc"}}, "runs");
+  EXPECT_NE(one.find("another revision of colza than this one (" + here + "): b1 (0123abc);"), std::string::npos) << one;
+  EXPECT_NE(one.find("remove them from runs"), std::string::npos) << one;
+  // Ten are named, the others counted.
+  std::vector<std::pair<std::string, std::string>> many;
+  for (int k = 0; k < 13; ++k) many.emplace_back("r" + std::to_string(k), "unknown");
+  const std::string w = runs_by_another_revision_warning(many, "runs");
+  EXPECT_NE(w.find("r9 (unknown) and 3 more"), std::string::npos) << w;
+  EXPECT_EQ(w.find("r10 "), std::string::npos) << w;
+}

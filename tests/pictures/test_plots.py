@@ -1,5 +1,5 @@
-"""Plots (issue 42) drawn by real runs and read back as PNG files: every run writes
-DIR/plots/, `colza plot DIR` draws them again, a calibration's report.md embeds its plots,
+"""Plots (issue 42) drawn by real runs and read back as PNG files: every run (oedometer,
+shear, angle of repose) writes DIR/plots/, `colza plot DIR` draws them again, a calibration's report.md embeds its plots,
 a diagnosis's summary is drawn, and a missing plotting stack is a warning (exit 0, the
 result complete), never a failure.
 Each plot must be a PNG of the script's size (python/colzaplot/common.py: 1000 x 625) whose
@@ -114,7 +114,17 @@ def diagnosis(colza, source, tmp):
     assert "## Plots" in report and "(plots/diagnosis_features.png)" in report, report
 
 
-CASES = {"oedometer": oedometer, "shear": shear, "calibration": calibration, "diagnosis": diagnosis}
+def repose(colza, source, tmp):
+    """An angle of repose run draws its heap with the fitted cone (a short rest: the plot, not
+    the angle, is under test)."""
+    d = os.path.join(tmp, "repose")
+    run_colza(colza, "run", "repose", "--quiet", "--config", os.path.join(source, "tests", "data", "small_repose.toml"),
+              "--out", d, "--set", "repose.rest_max_time=0.3", "--set", "output.snapshot_interval=0")
+    assert plots_of(d) == ["heap_profile.png"], plots_of(d)
+    check_png(os.path.join(d, "plots", "heap_profile.png"))
+
+
+CASES = {"oedometer": oedometer, "shear": shear, "repose": repose, "calibration": calibration, "diagnosis": diagnosis}
 
 
 def main():
