@@ -164,7 +164,8 @@ bool CodeRuns::run_colza(const std::string& scenario, const fs::path& config, co
                          Reuse reuse) const {
   const auto command_for = [&](const fs::path& into) {
     std::string cmd = quote(opt_.colza.string()) + " run " + scenario + " --config " + quote(config.string()) +
-                      " --out " + quote(into.string()) + " --force --quiet --threads 1";  // as YADE -j 1
+                      " --out " + quote(into.string()) + " --force --quiet --threads 1" +  // as YADE -j 1
+                      " --set output.plots=false";  // the comparison reads numbers; plots cost a Python start per run
     for (const auto& s : sets) cmd += " --set " + quote(s);
     for (const auto& e : extra) cmd += " " + quote(e);
     return cmd;

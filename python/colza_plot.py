@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Plots of a colza result directory into DIR/plots/ (PNG): `colza plot DIR` and every run
 call it. What it draws depends on the result (summary.json): an oedometer run, a shear
-load or series, an angle of repose run, a calibration (then report.md gets a Plots
+load or series, an angle of repose run, a generic scene, a calibration (then report.md gets a Plots
 section) or a diagnosis.
 
 Exit status: 0 plots written (or none for this kind of result), 3 the plotting stack
@@ -26,7 +26,7 @@ def kind_of(summary):
 
 
 def draw(result_dir, out_dir, measured_shear):
-    from colzaplot import calibration, common, diagnosis, oedometer, repose, shear
+    from colzaplot import calibration, common, diagnosis, oedometer, repose, scene, shear
 
     summary = common.read_json(os.path.join(result_dir, "summary.json"))
     kind = kind_of(summary)
@@ -38,6 +38,8 @@ def draw(result_dir, out_dir, measured_shear):
         return kind, shear.plot_series(result_dir, out_dir, measured_shear)
     if kind == "repose":
         return kind, repose.plot(result_dir, out_dir)
+    if kind == "scene":
+        return kind, scene.plot(result_dir, out_dir)
     if kind == "calibration":
         return kind, calibration.plot(result_dir, out_dir, summary)
     if kind == "diagnosis":

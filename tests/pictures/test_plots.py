@@ -1,5 +1,5 @@
 """Plots (issue 42) drawn by real runs and read back as PNG files: every run (oedometer,
-shear, angle of repose) writes DIR/plots/, `colza plot DIR` draws them again, a calibration's report.md embeds its plots,
+shear, angle of repose, scene) writes DIR/plots/, `colza plot DIR` draws them again, a calibration's report.md embeds its plots,
 a diagnosis's summary is drawn, and a missing plotting stack is a warning (exit 0, the
 result complete), never a failure.
 Each plot must be a PNG of the script's size (python/colzaplot/common.py: 1000 x 625) whose
@@ -124,7 +124,17 @@ def repose(colza, source, tmp):
     check_png(os.path.join(d, "plots", "heap_profile.png"))
 
 
-CASES = {"oedometer": oedometer, "shear": shear, "repose": repose, "calibration": calibration, "diagnosis": diagnosis}
+def scene(colza, source, tmp):
+    """A generic scene draws its energy budget and its recorded particles' contact forces."""
+    d = os.path.join(tmp, "scene")
+    run_colza(colza, "run", "scene", "--quiet", "--config", os.path.join(source, "crosscheck", "scenes", "micro_damping.toml"),
+              "--out", d)
+    assert plots_of(d) == ["scene_series.png"], plots_of(d)
+    check_png(os.path.join(d, "plots", "scene_series.png"))
+
+
+CASES = {"oedometer": oedometer, "shear": shear, "repose": repose, "scene": scene, "calibration": calibration,
+         "diagnosis": diagnosis}
 
 
 def main():
