@@ -23,6 +23,7 @@ nlohmann::json common_summary(const RunConfig& c, const std::string& scenario, i
           {"stiffness_rule", to_string(c.stiffness_rule)},
           {"wall_friction", to_string(c.wall_friction)},
           {"contact_model", describe(c.contact)},
+          {"contact", contact_summary(c.contact)},
           {"damping", c.integration.damping},
           {"damping_form", to_string(c.integration.damping_form)},
           {"time_step_mode", c.integration.automatic_time_step ? "auto" : "fixed"},

@@ -1,9 +1,12 @@
 #include "contact/slot_registry.hpp"
 
+#include <cmath>
 #include <functional>
 #include <limits>
 
 namespace colza {
+
+const char* to_string(RollingForm form) { return form == RollingForm::kYade ? "yade" : "pfc"; }
 
 namespace {
 
@@ -93,6 +96,34 @@ const std::vector<Registration<BondSlot>>& bond_registry() {
   return rows;
 }
 
+// The parameters each implementation runs with, under its [contact.<name>] keys (a row
+// above reads them; an implementation without parameters has none to report).
+template <class Implementation>
+nlohmann::json parameters_of(const Implementation&) {
+  return nlohmann::json::object();
+}
+nlohmann::json parameters_of(const WaltonBraunNormal& n) {
+  return {{"unloading_stiffness_ratio", n.unloading_stiffness_ratio}};
+}
+nlohmann::json parameters_of(const ViscousDamping& d) {
+  return {{"normal_damping_ratio", d.normal_ratio}, {"tangential_damping_ratio", d.tangential_ratio}};
+}
+nlohmann::json parameters_of(const ElasticPlasticRolling& r) {
+  return {{"stiffness_factor", r.stiffness_factor}, {"friction", r.friction}, {"form", to_string(r.form)},
+          {"at_walls", r.at_walls}};
+}
+nlohmann::json parameters_of(const ContactBond& b) {
+  return {{"normal_strength", b.normal_strength}, {"shear_strength", b.shear_strength}};
+}
+nlohmann::json parameters_of(const LoadInducedBond& b) {
+  const auto cap = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json("none"); };
+  return {{"onset_force", b.onset_force},
+          {"normal_strength_ratio", b.normal_strength_ratio},
+          {"shear_strength_ratio", b.shear_strength_ratio},
+          {"normal_strength_cap", cap(b.normal_strength_cap)},
+          {"shear_strength_cap", cap(b.shear_strength_cap)}};
+}
+
 // -----------------------------------------------------------------------------------
 
 template <class Slot>
@@ -139,7 +170,6 @@ const char* to_string(BondInstallMoment moment) {
   return "?";
 }
 
-const char* to_string(RollingForm form) { return form == RollingForm::kYade ? "yade" : "pfc"; }
 
 ContactModel read_contact_model(const ConfigNode& contact) {
   ContactModel m;
@@ -174,6 +204,21 @@ std::string describe(const ContactModel& model) {
   std::visit([&](const auto& b) { s += std::string(", bond=") + b.kName; }, model.bond);
   s += std::string(", bond_install=") + to_string(model.bond_install);
   return s;
+}
+
+nlohmann::json contact_summary(const ContactModel& model) {
+  const auto slot = [](const auto& variant) {
+    return std::visit(
+        [](const auto& implementation) {
+          nlohmann::json j = {{"law", implementation.kName}};
+          j.update(parameters_of(implementation));
+          return j;
+        },
+        variant);
+  };
+  return {{"normal", slot(model.normal)},   {"tangential", slot(model.tangential)}, {"damping", slot(model.damping)},
+          {"rolling", slot(model.rolling)}, {"bond", slot(model.bond)},             {"bond_install", to_string(model.bond_install)},
+          {"bond_gap", model.bond_gap}};
 }
 
 }  // namespace colza

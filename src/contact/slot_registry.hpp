@@ -2,6 +2,7 @@
 // [contact] table. One row per implementation: name, and a factory that reads the
 // implementation's parameters from [contact.<name>].
 #pragma once
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 #include "config/config_reader.hpp"
@@ -25,5 +26,10 @@ bool needs_hertz_moduli(const ContactModel& model);
 
 // Names of the slot implementations in use, e.g. {"linear", "coulomb", "contact_bond"}.
 std::string describe(const ContactModel& model);
+
+// Each slot's implementation and the parameters it runs with (summary.json's "contact"),
+// e.g. {"normal": {"law": "walton_braun", "unloading_stiffness_ratio": 2}, "rolling": {"law":
+// "none"}, ..., "bond_install": "never"}; keys as in the config's [contact.<law>] table.
+nlohmann::json contact_summary(const ContactModel& model);
 
 }  // namespace colza

@@ -8,6 +8,7 @@
 
 #include "config/plausibility.hpp"
 #include "config/run_config.hpp"
+#include "contact/slot_registry.hpp"
 #include "scenario/snapshot_recorder.hpp"
 #include "walls/wall_mesh.hpp"
 
@@ -115,4 +116,21 @@ TEST(SnapshotRecorder, OneAtTheStartOneAtEachMultipleAndOneAtTheEnd) {
   EXPECT_EQ(s.snapshots[0].particles(), 1u);
   EXPECT_EQ(s.snapshots[0].quads(), 1u);
   EXPECT_EQ(SnapshotRecorder(0.0, 0.0).enabled(), false);
+}
+
+TEST(ContactSummary, EachSlotNamesItsLawAndTheParametersItRunsWith) {
+  const RunConfig c = oedometer(
+      "[contact]\nrolling = \"elastic_plastic\"\nbond = \"load_induced\"\n"
+      "[contact.elastic_plastic]\nfriction = 0.18\n"
+      "[contact.load_induced]\nnormal_strength_ratio = 0.45\nshear_strength_ratio = 2.5\n");
+  const nlohmann::json j = contact_summary(c.contact);
+  EXPECT_EQ(j["normal"], (nlohmann::json{{"law", "linear"}}));
+  EXPECT_EQ(j["damping"], (nlohmann::json{{"law", "none"}}));
+  EXPECT_EQ(j["rolling"], (nlohmann::json{{"law", "elastic_plastic"}, {"friction", 0.18}, {"stiffness_factor", 1.0},
+                                          {"form", "yade"}, {"at_walls", false}}));
+  EXPECT_EQ(j["bond"]["law"], "load_induced");
+  EXPECT_EQ(j["bond"]["normal_strength_ratio"], 0.45);
+  EXPECT_EQ(j["bond"]["shear_strength_ratio"], 2.5);
+  EXPECT_EQ(j["bond"]["normal_strength_cap"], "none");  // no cap: infinite, which JSON cannot hold
+  EXPECT_EQ(j["bond_install"], "never");                // a load-induced bond forms under load
 }
