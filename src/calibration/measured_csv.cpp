@@ -125,4 +125,23 @@ void require_increasing(const std::vector<double>& x, const std::vector<std::siz
                             "repeated rows and any unloading part)");
 }
 
+std::vector<std::vector<double>> read_csv_columns_with_optional(const std::string& csv,
+                                                                const std::vector<std::string>& required,
+                                                                const std::vector<std::string>& optional,
+                                                                const std::string& spec_file, const std::string& key) {
+  const std::vector<std::string> header = read_csv_header(csv, spec_file, key);
+  std::vector<bool> present;
+  std::vector<std::string> names = required;
+  for (const std::string& name : optional) {
+    present.push_back(std::find(header.begin(), header.end(), name) != header.end());
+    if (present.back()) names.push_back(name);
+  }
+  std::vector<std::vector<double>> read = read_csv_columns(csv, names, spec_file, key);
+  std::vector<std::vector<double>> columns(read.begin(), read.begin() + static_cast<std::ptrdiff_t>(required.size()));
+  auto next = read.begin() + static_cast<std::ptrdiff_t>(required.size());
+  for (const bool is_present : present) columns.push_back(is_present ? std::move(*next++) : std::vector<double>{});
+  return columns;
+}
+
 }  // namespace colza::calibration
+

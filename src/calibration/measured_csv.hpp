@@ -22,6 +22,13 @@ std::vector<std::vector<double>> read_csv_columns(const std::string& csv, const 
 // problems are ConfigErrors as above.
 std::vector<std::string> read_csv_header(const std::string& csv, const std::string& spec_file, const std::string& key);
 
+// The `required` columns, then each of `optional` in the order asked for: its values when the
+// header names it, an empty column when it does not. Problems as read_csv_columns'.
+std::vector<std::vector<double>> read_csv_columns_with_optional(const std::string& csv,
+                                                                const std::vector<std::string>& required,
+                                                                const std::vector<std::string>& optional,
+                                                                const std::string& spec_file, const std::string& key);
+
 // A measured curve's displacement column `x` (named `column`, in m) must increase strictly
 // from row to row: a ConfigError naming the rows' lines otherwise (sorting, repeated rows or
 // an unloading part would otherwise bend the fit or the strength without a word).

@@ -1,6 +1,5 @@
 #include "calibration/measured_heap_profile.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include "calibration/measured_csv.hpp"
@@ -13,11 +12,9 @@ namespace colza::calibration {
 
 HeapAngle measured_heap_angle(const std::string& csv, const RunConfig& model, const std::string& spec_file,
                               const std::string& key) {
-  const std::vector<std::string> header = read_csv_header(csv, spec_file, key);
-  const bool azimuths = std::find(header.begin(), header.end(), kHeapAzimuthColumn) != header.end();
-  std::vector<std::string> columns{kHeapRhoColumn, kHeapTopColumn};
-  if (azimuths) columns.push_back(kHeapAzimuthColumn);
-  const auto cols = read_csv_columns(csv, columns, spec_file, key);
+  const auto cols =
+      read_csv_columns_with_optional(csv, {kHeapRhoColumn, kHeapTopColumn}, {kHeapAzimuthColumn}, spec_file, key);
+  const bool azimuths = !cols[2].empty();  // a column the header names has a value per row (at least one)
   const std::size_t n = cols[0].size();
   if (n < 5) throw ConfigError(spec_file, key, csv + ": a heap profile needs at least 5 points, it has " + std::to_string(n));
   std::vector<double> x(n), y(n, 0.0), z = cols[1], radius(n, 0.0);

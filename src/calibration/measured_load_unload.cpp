@@ -10,17 +10,14 @@ namespace colza::calibration {
 
 MeasuredLoadUnload read_measured_load_unload(const std::string& csv, const std::string& spec_file,
                                              const std::string& key) {
-  const std::vector<std::string> header = read_csv_header(csv, spec_file, key);
-  const bool radial = std::find(header.begin(), header.end(), kRadialForceColumn) != header.end();
-  std::vector<std::string> columns{kPistonDisplacementColumn, kPistonForceColumn};
-  if (radial) columns.push_back(kRadialForceColumn);
-  const auto cols = read_csv_columns(csv, columns, spec_file, key);
+  const auto cols = read_csv_columns_with_optional(csv, {kPistonDisplacementColumn, kPistonForceColumn},
+                                                   {kRadialForceColumn}, spec_file, key);
   if (cols[0].size() < 2) throw ConfigError(spec_file, key, csv + ": a load-unload curve needs at least 2 rows");
   MeasuredLoadUnload m;
   m.file = csv;
   m.travel = cols[0];
   m.force = cols[1];
-  if (radial) m.radial = cols[2];
+  m.radial = cols[2];  // empty without the column
   return m;
 }
 

@@ -170,7 +170,6 @@ const char* to_string(BondInstallMoment moment) {
   return "?";
 }
 
-
 ContactModel read_contact_model(const ConfigNode& contact) {
   ContactModel m;
   m.normal = choose(contact, "normal", LinearNormal::kName, normal_registry());

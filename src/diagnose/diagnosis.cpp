@@ -235,10 +235,10 @@ class SignaturePairs {
   SignaturePairs(const DiagnosisProblem& p, const Eigen::VectorXd& fit)
       : p_(p), fit_(fit), neutral_(p.candidates.size()), probe_(p.candidates.size()) {}
   int seeds(std::size_t k) const { return static_cast<int>(neutral_[k].size()); }
-  // Queues realisations seeds(k) + 1 .. last of candidate k.
+  // Queues realisations seeds(k) + 1 .. last of candidate k (at most once between runs).
   void queue(std::size_t k, int last) {
     const Candidate& c = p_.candidates[k];
-    for (int s = seeds(k) + 1 + queued_of(k); s <= last; ++s) {
+    for (int s = seeds(k) + 1; s <= last; ++s) {
       jobs_.emplace_back(ModelPoint{fit_, static_cast<int>(k), c.neutral()}, s);
       jobs_.emplace_back(ModelPoint{fit_, static_cast<int>(k), c.probe}, s);
       owner_.push_back(k);
@@ -262,7 +262,6 @@ class SignaturePairs {
   }
 
  private:
-  int queued_of(std::size_t k) const { return static_cast<int>(std::count(owner_.begin(), owner_.end(), k)); }
   const DiagnosisProblem& p_;
   Eigen::VectorXd fit_;
   std::vector<std::vector<Eigen::VectorXd>> neutral_, probe_;
@@ -276,7 +275,7 @@ class SignaturePairs {
 // settings.signature_seeds_max: its standard error shrinks as 1/sqrt(pairs).
 void measure_signatures(const DiagnosisProblem& p, CountingModel& model, DiagnosisResult& out) {
   const std::size_t nc = p.candidates.size();
-  const int most = std::max(p.settings.signature_seeds, p.settings.signature_seeds_max);
+  const int most = p.settings.signature_seeds_max;  // >= signature_seeds (validate_diagnosis)
   SignaturePairs pairs(p, out.baseline.parameters);
   for (std::size_t k = 0; k < nc; ++k) pairs.queue(k, p.settings.signature_seeds);
   while (pairs.run(model)) {

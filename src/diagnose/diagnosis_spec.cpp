@@ -216,7 +216,7 @@ DiagnosisSpec read_diagnosis_spec(const std::string& path) {
   d.signature_seeds = static_cast<int>(st.integer("signature_seeds", d.signature_seeds, 1));
   if (d.signature_seeds > d.replicates) st.fail("signature_seeds", "must not exceed replicates");
   d.signature_seeds_max =
-      static_cast<int>(st.integer("signature_seeds_max", std::max(d.replicates, d.signature_seeds), d.signature_seeds));
+      static_cast<int>(st.integer("signature_seeds_max", d.replicates, d.signature_seeds));
   d.signature_signal_to_noise = st.number_in("signature_signal_to_noise", d.signature_signal_to_noise, 0.0, 100.0);
   d.significance = st.number_in("significance", d.significance, 1e-6, 0.2);
   d.ambiguity_cosine = st.number_in("ambiguity_cosine", d.ambiguity_cosine, 0.5, 0.999);
