@@ -28,7 +28,7 @@ HeapAngle fit_heap_angle(const std::vector<double>& x, const std::vector<double>
   for (double r : radius) mean_d += 2.0 * r;
   mean_d /= static_cast<double>(n);
   const double bin = s.bin_width > 0.0 ? s.bin_width : mean_d;
-  const double toe = s.toe_height > 0.0 ? s.toe_height : 2.0 * mean_d;
+  const double toe = s.base_height + (s.toe_height > 0.0 ? s.toe_height : 2.0 * mean_d);
 
   // The surface sphere of each (sector, radial bin): its highest top, with that sphere's rho.
   std::map<std::pair<std::size_t, long>, std::pair<double, double>> surface;  // -> (top, rho)

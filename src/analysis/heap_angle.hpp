@@ -6,8 +6,9 @@
 // rho from the axis and a top z + r. The plane is cut into `sectors` equal sectors and, along
 // rho, into bins of `bin_width` (default: the mean diameter); the surface sphere of a cell is
 // its highest top. The heap's radius R is the largest rho of a surface sphere whose top stands
-// at least `toe_height` above the base (default: two mean diameters: spheres lying one layer
-// deep on the plate, or rolled away, are not heap). The fit is the least-squares line
+// at least `toe_height` above the base, which lies at `base_height` (the plate, or the top of
+// a layer glued to it; default toe: two mean diameters: spheres lying one layer deep on the
+// base, or rolled away, are not heap). The fit is the least-squares line
 // top = a - tan(alpha) rho through the surface spheres with inner R <= rho <= outer R
 // (defaults 0.25 and 0.75: away from the rounded top and the spread toe):
 //   alpha = atan(tan_alpha), its error = se(tan_alpha) / (1 + tan_alpha^2) (rad -> deg),
@@ -23,7 +24,8 @@ namespace colza {
 struct HeapFitSettings {
   std::size_t sectors = 16;
   double bin_width = 0.0;    // m; 0: the mean diameter
-  double toe_height = 0.0;   // m; 0: two mean diameters
+  double toe_height = 0.0;   // m above base_height; 0: two mean diameters
+  double base_height = 0.0;  // m, the surface the heap stands on
   double inner = 0.25, outer = 0.75;  // of R
   double centre_x = 0.0, centre_y = 0.0;  // m, the heap's axis
 };

@@ -25,7 +25,7 @@ HeapAngle measured_heap_angle(const std::string& csv, const RunConfig& model, co
     x[i] = rho * std::cos(a);
     y[i] = rho * std::sin(a);
   }
-  HeapFitSettings s = repose_fit_settings(model.repose);
+  HeapFitSettings s = repose_fit_settings(model.repose, 0.0);  // a profile's tops stand above its base
   if (!azimuths) s.sectors = 1;
   s.centre_x = s.centre_y = 0.0;
   const double mean_diameter = 0.5 * (model.particle.diameter_min + model.particle.diameter_max);

@@ -2,7 +2,7 @@
 // '#' comment lines allowed, one header line, then one row per point of the heap's surface:
 //
 //   rho           m    the point's distance from the heap's axis
-//   top           m    its height above the base plate
+//   top           m    its height above the heap's base (the plate, or the top of a layer glued to it)
 //   azimuth_deg   deg  optional: its direction about the axis (profiles along several lines)
 //
 // Other columns are ignored, so colza's own heap_profile.csv (one row per sphere, its top) is

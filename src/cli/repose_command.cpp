@@ -39,6 +39,10 @@ void run_repose_scenario(const RunConfig& c, const RunOptions& opt, OutputStagin
   s["lift_time"] = r.lift_time;
   s["rest"] = rest_json(r.rest);
   s["base_friction"] = rs.base_friction;
+  s["base"] = {{"kind", rs.base == ReposeBase::kPlate ? "plate" : "glued_layer"},
+               {"glued_spheres", r.glued_layer.size()},
+               {"glued_layer_diameter", rs.base == ReposeBase::kPlate ? 0.0 : rs.glued_layer_diameter},
+               {"base_height", r.base_height}};
   const HeapAngle& h = r.heap;
   s["angle_of_repose"] = {{"valid", h.valid},
                           {"angle_deg", h.angle_deg},
@@ -76,16 +80,19 @@ void run_repose_scenario(const RunConfig& c, const RunOptions& opt, OutputStagin
   add_snapshots_summary(s, r.snapshots);
   add_timing(s, r.stages);
 
-  const Table profile = heap_profile_table(r.final_state);
+  const Table profile = heap_profile_table(r.final_state, r.base_height);
   write_csv(out.path("heap_profile.csv"), profile);
   write_packing(out.path("packing.txt"), r.column);
   write_packing(out.path("heap.txt"), r.final_state);
   write_result_h5(out, "repose", c, s, "heap_profile", profile,
-                  {{"particles/column", &r.column}, {"particles/final", &r.final_state}}, &r.snapshots);
+                  {{"particles/column", &r.column}, {"particles/final", &r.final_state}, {"particles/glued_layer", &r.glued_layer}}, &r.snapshots);
   write_json(out.path("summary.json"), s);
 
   std::printf("repose: %zu particles (%zu generated), column %.1f mm high, bulk density %.1f kg/m^3\n", r.particles,
               r.particles_generated, 1e3 * r.column_height, r.column_bulk_density);
+  if (r.glued_layer.size() > 0)
+    std::printf("  base: %zu spheres glued over a %.0f mm disc, its top at %.1f mm\n", r.glued_layer.size(),
+                1e3 * rs.glued_layer_diameter, 1e3 * r.base_height);
   if (h.valid)
     std::printf("  angle of repose %.2f +/- %.2f deg (cone fit to %zu surface spheres at %.1f..%.1f mm), heap %.1f mm "
                 "high, radius %.1f mm\n",

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "scenario/glued_layer.hpp"
 #include "scenario/sample_preparation.hpp"
 #include "scenario/snapshot_recorder.hpp"
 
@@ -27,21 +28,53 @@ double highest_top(const ParticleArrays& p) {
   return top;
 }
 
+// The fixed spheres glued to the plate (none on a bare plate), seeded by the run's seed.
+ParticleArrays glued_base(const RunConfig& c) {
+  const ReposeSpec& rs = c.repose;
+  if (rs.base == ReposeBase::kPlate) return {};
+  GluedLayerRequest q;
+  q.disc_radius = 0.5 * rs.glued_layer_diameter;
+  q.diameter_min = c.particle.diameter_min;
+  q.diameter_max = c.particle.diameter_max;
+  q.density = c.particle.density;
+  q.seed = c.seed;
+  return glued_layer(q);
+}
+
+// The surface the heap stands on: the plate (0), or the glued layer's mean top (m).
+double base_height_of(const ParticleArrays& glued) {
+  if (glued.size() == 0) return 0.0;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < glued.size(); ++i) sum += glued.position[i].z() + glued.radius[i];
+  return sum / static_cast<double>(glued.size());
+}
+
+// The free spheres of `p` (the glued ones are the base, not the heap).
+ParticleArrays free_spheres(const ParticleArrays& p) {
+  ParticleArrays free = p;
+  std::vector<std::uint8_t> keep(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) keep[i] = p.fixed[i] ? 0 : 1;
+  free.compact(keep);
+  return free;
+}
+
 }  // namespace
 
-HeapFitSettings repose_fit_settings(const ReposeSpec& r) {
+HeapFitSettings repose_fit_settings(const ReposeSpec& r, double base_height) {
   HeapFitSettings s;
+  s.base_height = base_height;
   s.sectors = static_cast<std::size_t>(r.sectors);
   s.inner = r.fit_inner;
   s.outer = r.fit_outer;
   return s;
 }
 
-Table heap_profile_table(const ParticleArrays& heap) {
+Table heap_profile_table(const ParticleArrays& heap, double base_height) {
   Table profile({"rho", "azimuth_deg", "top"}, {"m", "deg", "m"});
   for (std::size_t i = 0; i < heap.size(); ++i) {
     const double x = heap.position[i].x(), y = heap.position[i].y();
-    profile.add_row({std::hypot(x, y), std::atan2(y, x) * 180.0 / kPi, heap.position[i].z() + heap.radius[i]});
+    profile.add_row({std::hypot(x, y), std::atan2(y, x) * 180.0 / kPi,
+                     heap.position[i].z() + heap.radius[i] - base_height});
   }
   return profile;
 }
@@ -53,12 +86,19 @@ ReposeResult run_repose(const RunConfig& c, Progress& progress, double snapshot_
   // --- the column: generated, settled in the cylinder (the base with the walls' friction),
   // cut at fill_height, at rest --------------------------------------------------------
   StageClock prep_clock("settling");
+  r.glued_layer = glued_base(c);
+  r.base_height = base_height_of(r.glued_layer);
   {
     World settling_world;
     build_repose_container(settling_world, rs, 0);
-    NewSample s = settle_new_sample(
-        settling_world, c, GenerationRegion::vertical_cylinder(Vec3::Zero(), 0.5 * rs.cylinder_diameter, rs.generation_height),
-        "repose.generation_height", rs.fill_height, "below repose.fill_height", progress, prep_clock);
+    settling_world.particles = r.glued_layer;
+    const double above_layer = highest_top(r.glued_layer);
+    NewSample s = settle_new_sample(settling_world, c,
+                                    GenerationRegion::vertical_cylinder(Vec3(0.0, 0.0, above_layer),
+                                                                        0.5 * rs.cylinder_diameter,
+                                                                        rs.generation_height - above_layer),
+                                    "repose.generation_height", rs.fill_height, "below repose.fill_height", progress,
+                                    prep_clock);
     r.column = std::move(s.at_rest);
     r.particles_generated = s.generated;
     r.settling = s.settling;
@@ -67,7 +107,8 @@ ReposeResult run_repose(const RunConfig& c, Progress& progress, double snapshot_
   r.column_height = highest_top(r.column);
   double mass = 0.0;
   for (double m : r.column.mass) mass += m;
-  r.column_bulk_density = mass / (kPi * 0.25 * rs.cylinder_diameter * rs.cylinder_diameter * r.column_height);
+  r.column_bulk_density =
+      mass / (kPi * 0.25 * rs.cylinder_diameter * rs.cylinder_diameter * (r.column_height - r.base_height));
   r.stages.push_back(prep_clock.finish());
 
   // --- the heap: the base plate gets its own friction (wall material 1) ------------------
@@ -78,7 +119,9 @@ ReposeResult run_repose(const RunConfig& c, Progress& progress, double snapshot_
   physics.wall_materials.push_back(base);
   World world;
   build_repose_container(world, rs, 1);
-  world.particles = r.column;
+  world.particles = r.glued_layer;
+  for (std::size_t i = 0; i < r.column.size(); ++i)
+    world.particles.add(r.column.position[i], r.column.radius[i], c.particle.density);
   Stepper stepper(physics);
   stepper.prepare(world);
   const std::size_t cylinder = 1;
@@ -125,7 +168,8 @@ ReposeResult run_repose(const RunConfig& c, Progress& progress, double snapshot_
   snapshots.record(world);  // the heap at rest
   r.snapshots = snapshots.take();
 
-  const ParticleArrays& p = world.particles;
+  r.final_state = free_spheres(world.particles);
+  const ParticleArrays& p = r.final_state;
   std::vector<double> x(p.size()), y(p.size()), z(p.size()), radius(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) {
     x[i] = p.position[i].x();
@@ -133,10 +177,9 @@ ReposeResult run_repose(const RunConfig& c, Progress& progress, double snapshot_
     z[i] = p.position[i].z();
     radius[i] = p.radius[i];
   }
-  r.heap = fit_heap_angle(x, y, z, radius, repose_fit_settings(rs));
+  r.heap = fit_heap_angle(x, y, z, radius, repose_fit_settings(rs, r.base_height));
   for (std::size_t i = 0; i < p.size(); ++i)
     if (std::hypot(x[i], y[i]) > r.heap.radius + 2.0 * d_max) ++r.spheres_beyond_heap;
-  r.final_state = world.particles;
   return r;
 }
 

@@ -30,7 +30,7 @@ std::size_t place_generated_sample(World& world, const RunConfig& c, const Gener
 ParticleArrays sample_at_rest(const ParticleArrays& from_settled, double density) {
   ParticleArrays at_rest;
   for (std::size_t i = 0; i < from_settled.size(); ++i)
-    at_rest.add(from_settled.position[i], from_settled.radius[i], density);
+    if (!from_settled.fixed[i]) at_rest.add(from_settled.position[i], from_settled.radius[i], density);
   return at_rest;
 }
 

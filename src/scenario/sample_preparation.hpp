@@ -19,7 +19,7 @@ std::size_t place_generated_sample(World& world, const RunConfig& c, const Gener
 
 // The sample a test starts from: positions and radii only, at rest, without contact
 // histories, exactly what its packing file gives back. `from_settled`: a settled world's
-// particles; `from_packing`: a packing file (`key`: its config key, for errors).
+// free particles (fixed ones, a glued base, are not the sample); `from_packing`: a packing file (`key`: its config key, for errors).
 ParticleArrays sample_at_rest(const ParticleArrays& from_settled, double density);
 ParticleArrays sample_from_packing(const std::string& file, const std::string& key, double density);
 

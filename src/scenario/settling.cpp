@@ -91,8 +91,8 @@ NewSample settle_new_sample(World& world, const RunConfig& c, const GenerationRe
   clock.count_steps(s.settling.steps, s.generated);
   discard_above(world, stepper, rim);
   store_in_space_order(world, stepper);
-  if (world.particles.size() == 0) throw no_sphere_left_error(c, stepper, where);
   s.at_rest = sample_at_rest(world.particles, c.particle.density);
+  if (s.at_rest.size() == 0) throw no_sphere_left_error(c, stepper, where);
   return s;
 }
 

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <sstream>
 
 #include "cli_runner.hpp"
 
@@ -83,6 +84,42 @@ TEST(Repose, WithoutRollingResistanceAndWithLightDampingNoHeapForms) {
   EXPECT_NE(s["warnings"].dump().find("no cone could be fitted"), std::string::npos) << s["warnings"].dump();
 }
 
+TEST(Repose, OnAGluedLayerTheHeapRestsAndNoSphereReachesThePlate) {
+  // repose.base = "glued_layer": a monolayer of fixed spheres covers a 210 mm disc of the
+  // plate (scenario/glued_layer.hpp) and the heap stands on it. Its lowest spheres can no
+  // longer roll away on the bare plate, so a heap of frictional spheres without rolling
+  // resistance comes to rest (on the bare plate it does not: the fixture's run). Checked:
+  // the heap rests, its angle is fitted, the summary describes the base, and no free sphere
+  // within the glued disc (a diameter from its rim) touches the plate.
+  const fs::path out = scratch_dir("repose-glued");
+  const CliResult r = run_colza("run repose --quiet --config " + kConfig +
+                                " --set repose.base=glued_layer --set repose.generation_height=0.18 --set repose.rest_max_time=8 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  const auto s = read_json(out / "summary.json");
+  EXPECT_TRUE(s["rest"]["converged"].get<bool>()) << s["rest"].dump();
+  EXPECT_TRUE(s["angle_of_repose"]["valid"].get<bool>()) << s["angle_of_repose"].dump();
+  EXPECT_EQ(s["base"]["kind"], "glued_layer");
+  EXPECT_GT(s["base"]["glued_spheres"].get<int>(), 400);
+  const double disc_radius = 0.5 * s["base"]["glued_layer_diameter"].get<double>();
+  EXPECT_NEAR(disc_radius, 0.105, 1e-12);  // 3.5 cylinder diameters
+  // The base stands about a diameter (6-7 mm) above the plate.
+  EXPECT_GT(s["base"]["base_height"].get<double>(), 0.006);
+  EXPECT_LT(s["base"]["base_height"].get<double>(), 0.007);
+  // heap.txt: the free spheres only, `x y z r` (comment lines start with #).
+  std::istringstream heap(read_file(out / "heap.txt"));
+  std::string line;
+  std::size_t spheres = 0, on_plate = 0;
+  while (std::getline(heap, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    double x, y, z, radius;
+    std::istringstream(line) >> x >> y >> z >> radius;
+    ++spheres;
+    if (std::hypot(x, y) < disc_radius - 0.007 && z - radius < 1e-4) ++on_plate;
+  }
+  EXPECT_EQ(spheres, s["particles"].get<std::size_t>());
+  EXPECT_EQ(on_plate, 0u);
+}
+
 TEST(Repose, BadInputIsExit2NamingTheKey) {
   const fs::path out = scratch_dir("repose-bad") / "out";
   CliResult r = run_colza("run repose --quiet --config " + kConfig + " --set repose.cylinder_diameter=0.02 --out " +
@@ -90,6 +127,13 @@ TEST(Repose, BadInputIsExit2NamingTheKey) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.stderr_text.find("key 'repose.cylinder_diameter'"), std::string::npos) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("narrower than 5 particle diameters"), std::string::npos) << r.stderr_text;
+  r = run_colza("run repose --quiet --config " + kConfig + " --set repose.base=carpet --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("key 'repose.base'"), std::string::npos) << r.stderr_text;
+  r = run_colza("run repose --quiet --config " + kConfig +
+                " --set repose.base=glued_layer --set repose.glued_layer_diameter=0.07 --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_text.find("key 'repose.glued_layer_diameter'"), std::string::npos) << r.stderr_text;
   r = run_colza("run repose --quiet --config " + kConfig + " --set repose.lift_speed=0 --out " + out.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.stderr_text.find("key 'repose.lift_speed'"), std::string::npos) << r.stderr_text;

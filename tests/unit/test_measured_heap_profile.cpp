@@ -54,29 +54,35 @@ TEST(MeasuredHeapProfile, PointsOnAConeGiveItsAngle) {
 TEST(MeasuredHeapProfile, ColzasOwnHeapProfileGivesTheRunsAngle) {
   // Spheres of d 6.5 mm whose tops lie on a 28 deg cone, at random azimuths, with buried ones
   // below: the run's fit (repose_fit_settings, the spheres themselves) and the fit of the
-  // profile colza writes (heap_profile_table) read back as a measured file agree.
-  ParticleArrays heap;
-  const double h = 0.060, r = 0.00325, t = std::tan(28.0 * kPi / 180.0);
-  boost::random::mt19937 rng(11);
-  boost::random::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<double> x, y, z, radius;
-  for (int k = 0; k < 3000; ++k) {
-    const double rho = h / t * std::sqrt(unit(rng)), theta = 2.0 * kPi * unit(rng);
-    for (double depth : {0.0, 2.0 * r * (1.0 + 2.0 * unit(rng))}) {
-      heap.add(Vec3(rho * std::cos(theta), rho * std::sin(theta), h - rho * t - depth - r), r, 1000.0);
-      x.push_back(rho * std::cos(theta)), y.push_back(rho * std::sin(theta)), z.push_back(h - rho * t - depth - r);
-      radius.push_back(r);
+  // profile colza writes (heap_profile_table) read back as a measured file agree, on the bare
+  // plate and on a glued layer whose top stands one diameter above it (the profile's tops
+  // are heights above the heap's base).
+  for (const double base : {0.0, 0.0065}) {
+    ParticleArrays heap;
+    const double h = 0.060, r = 0.00325, t = std::tan(28.0 * kPi / 180.0);
+    boost::random::mt19937 rng(11);
+    boost::random::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<double> x, y, z, radius;
+    for (int k = 0; k < 3000; ++k) {
+      const double rho = h / t * std::sqrt(unit(rng)), theta = 2.0 * kPi * unit(rng);
+      for (double depth : {0.0, 2.0 * r * (1.0 + 2.0 * unit(rng))}) {
+        const double zc = base + h - rho * t - depth - r;
+        heap.add(Vec3(rho * std::cos(theta), rho * std::sin(theta), zc), r, 1000.0);
+        x.push_back(rho * std::cos(theta)), y.push_back(rho * std::sin(theta)), z.push_back(zc);
+        radius.push_back(r);
+      }
     }
+    const RunConfig c = model();
+    const HeapAngle run = fit_heap_angle(x, y, z, radius, repose_fit_settings(c.repose, base));
+    const ScratchDir dir;
+    const std::string csv = (dir.path() / "heap_profile.csv").string();
+    write_csv(csv, heap_profile_table(heap, base));
+    const HeapAngle read = measured_heap_angle(csv, c, "spec.toml", "tests.curve");
+    ASSERT_TRUE(run.valid && read.valid) << "base " << base;
+    EXPECT_NEAR(read.angle_deg, run.angle_deg, 1e-6) << "base " << base;
+    EXPECT_NEAR(read.radius, run.radius, 1e-9) << "base " << base;
+    EXPECT_NEAR(read.height, run.height - base, 1e-9) << "base " << base;
   }
-  const RunConfig c = model();
-  const HeapAngle run = fit_heap_angle(x, y, z, radius, repose_fit_settings(c.repose));
-  const ScratchDir dir;
-  const std::string csv = (dir.path() / "heap_profile.csv").string();
-  write_csv(csv, heap_profile_table(heap));
-  const HeapAngle read = measured_heap_angle(csv, c, "spec.toml", "tests.curve");
-  ASSERT_TRUE(run.valid && read.valid);
-  EXPECT_NEAR(read.angle_deg, run.angle_deg, 1e-6);
-  EXPECT_NEAR(read.radius, run.radius, 1e-9);
 }
 
 TEST(MeasuredHeapProfile, BadProfilesNameTheSpecTheKeyAndTheReason) {
