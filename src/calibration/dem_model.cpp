@@ -136,15 +136,7 @@ Eigen::VectorXd DemModel::run(const Eigen::VectorXd& x, int replicate) {
     packing_note_ = "every run loads the packing settled once at the design centre: " + run.shared_packing_file +
                     (spec_.problem.replicates > 0 ? " (replicates: one such packing per seed)" : "");
   }
-  DemRunRecord rec;
-  rec.id = run.id;
-  rec.x = x;
-  rec.replicate = replicate;
-  rec.reused = run.reused;
-  rec.wall_seconds = run.wall_seconds;
-  rec.made_by = run.made_by;
-  rec.outputs = run.outputs;
-  rec.y = targets_from(run);
+  DemRunRecord rec{x, targets_from(run), run};
   if (verbose_) print_run(x, run, rec.y);
   Eigen::VectorXd y = rec.y;
   std::lock_guard<std::mutex> lock(mutex_);
@@ -160,7 +152,7 @@ std::vector<DemRunRecord> DemModel::records() const {
 const DemRunRecord* DemModel::find(const Eigen::VectorXd& x, int replicate) const {
   std::lock_guard<std::mutex> lock(mutex_);
   for (const auto& r : records_)
-    if (r.replicate == replicate && r.x.size() == x.size() && (r.x - x).norm() == 0.0) return &r;
+    if (r.run.replicate == replicate && r.x.size() == x.size() && (r.x - x).norm() == 0.0) return &r;
   return nullptr;
 }
 

@@ -21,14 +21,11 @@
 
 namespace colza::calibration {
 
+// A design run as the calibration sees it: the point, the targets read from it, and the run
+// cache's record of it (its id, realisation, reuse, wall time, revision, outputs).
 struct DemRunRecord {
-  std::string id;           // fingerprint = directory name under runs/
   Eigen::VectorXd x, y;
-  int replicate = 0;        // realisation: seed = config seed + replicate
-  bool reused = false;
-  double wall_seconds = 0;  // of the original run
-  std::string made_by;      // git revision of the colza that ran it ("unknown" for runs older than the field)
-  nlohmann::json outputs;
+  RunRecord run;
 };
 
 class DemModel {

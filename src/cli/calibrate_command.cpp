@@ -84,7 +84,7 @@ std::vector<std::string> warnings_about_runs(const DemModel& dem, const fs::path
   std::vector<std::string> w = dem.warnings();
   std::vector<std::pair<std::string, std::string>> reused;
   for (const auto& rec : dem.records())
-    if (rec.reused) reused.emplace_back(rec.id, rec.made_by);
+    if (rec.run.reused) reused.emplace_back(rec.run.id, rec.run.made_by);
   if (std::string other = calibration::runs_by_another_revision_warning(reused, runs); !other.empty())
     w.push_back(std::move(other));
   return w;
@@ -246,9 +246,9 @@ int calibrate_command(const CalibrateOptions& opt) {
   ctx.measured_section = measured_data_section(spec);
   for (const auto& run : result.runs) {
     const DemRunRecord* rec = dem.find(run.x, run.replicate);
-    ctx.run_ids.push_back(rec ? rec->id : "");
-    ctx.run_reused.push_back(rec ? rec->reused : false);
-    ctx.run_wall_seconds.push_back(rec ? rec->wall_seconds : 0.0);
+    ctx.run_ids.push_back(rec ? rec->run.id : "");
+    ctx.run_reused.push_back(rec ? rec->run.reused : false);
+    ctx.run_wall_seconds.push_back(rec ? rec->run.wall_seconds : 0.0);
   }
   ctx.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   for (const auto& w : run_warnings) ctx.extra_warnings.push_back(w);
