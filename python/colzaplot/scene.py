@@ -1,4 +1,4 @@
-"""A generic scene's series (series.csv, README "Generic scene"): the energy budget against
+"""A generic scene's series (series.csv, docs/running.md "Generic scene"): the energy budget against
 time, stored energies and what left the system (J), with the balance
 stored + dissipated - wall work, less its first value, which a complete bookkeeping keeps at
 zero (engine/energy.hpp); and the contact force on each recorded particle (N)."""

@@ -6,7 +6,7 @@
 // density (kg/m^3), p the confining stress (Pa). It is the ratio of the time a grain takes to
 // fall into a gap under p, d sqrt(rho_p / p), to the time of the imposed deformation,
 // 1 / gamma_dot. Below ~1e-3 a test is quasi-static: its result does not depend on its speed.
-// The strain rates colza uses (README, Inertial number):
+// The strain rates colza uses (docs/running.md, Inertial number):
 //   oedometer:  gamma_dot = v_piston / H, H the sample's height (the piston's start), and p the
 //               piston stress (the vertical stress the test controls);
 //   shear box:  gamma_dot = v_shear / t, t the shear zone's thickness, taken as 10 mean

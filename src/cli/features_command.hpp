@@ -1,5 +1,5 @@
 // `colza features load-unload|shear --csv FILE ...`: the lab-test features of a measured (or
-// any colza-written) curve, by the code that reduces colza's runs (README, "Load-unload
+// any colza-written) curve, by the code that reduces colza's runs (docs/running.md, "Load-unload
 // cycles, whole shear curves, inertial number"; data/measured/README.md). Prints JSON.
 #pragma once
 #include <string>

@@ -1,4 +1,4 @@
-// `colza run repose`: the angle of repose test's outputs (README, "Angle of repose").
+// `colza run repose`: the angle of repose test's outputs (docs/running.md, "Angle of repose").
 #pragma once
 #include "cli/run_commands.hpp"
 #include "config/run_config.hpp"

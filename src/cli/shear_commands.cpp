@@ -46,7 +46,7 @@ std::string config_fingerprint(const RunConfig& c) {
 
 // What a user must not miss in a shear load's result: printed as WARNING lines and kept in
 // summary.json's "warnings". A mean stress error past this during shearing means the servo
-// did not hold the load (the paper's speed gives ~0.2 %, ten times it ~2 %: README).
+// did not hold the load (the paper's speed gives ~0.2 %, ten times it ~2 %).
 constexpr double kHeldStressError = 0.10;
 
 // The whole curve's features (analysis/shear_curve_features.hpp) from the recorded rows, as

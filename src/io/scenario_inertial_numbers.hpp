@@ -1,4 +1,4 @@
-// What each lab test's inertial number is made of (analysis/inertial_number.hpp; README,
+// What each lab test's inertial number is made of (analysis/inertial_number.hpp; docs/running.md,
 // "Inertial number"): the strain rate, grain size, particle density and confining stress
 // of an oedometer, a shear load and an angle-of-repose lift, from the config and the run.
 #pragma once

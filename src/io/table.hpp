@@ -1,5 +1,5 @@
 // A column table of doubles: the in-memory form of every recorded curve. Written as CSV
-// (for people and the YADE cross-check; units in the README) and as an HDF5 group (for
+// (for people and the YADE cross-check; units in docs/running.md) and as an HDF5 group (for
 // programs; each column's unit is its dataset's "units" attribute).
 #pragma once
 #include <string>

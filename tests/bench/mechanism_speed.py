@@ -19,7 +19,7 @@ import subprocess
 
 from compare_codes import PISTON_SPEED, prepare_packing
 
-# name -> --set overrides (physics.md section 7; parameters in the README's configuration reference)
+# name -> --set overrides (physics.md section 7; parameters in docs/configuration.md)
 CONFIGS = {
     "paper's law (baseline)": [],
     "rolling resistance": ["contact.rolling=elastic_plastic", "contact.elastic_plastic.stiffness_factor=1.0",

@@ -1,9 +1,9 @@
 // End-to-end: the angle of repose test (colza run repose; tests/data/small_repose.toml: the
 // paper's particles in a 60 mm cylinder filled 60 mm high, lifted fast). Checks the outputs,
 // the cone fit's plausibility, determinism, that spheres without rolling resistance form no
-// heap once the damping lets them move, and bad input. Not checked: that the angle grows with
-// sliding friction and saturates (physics.md section 8): without rolling resistance the heap
-// does not come to rest (README, Angle of repose), so its angle is no material property yet.
+// heap on the bare plate once the damping lets them move, that on a glued layer they do and it
+// rests, and bad input. That the angle grows with sliding friction and saturates is the
+// friction series (label full, tests/full/test_repose_friction_series.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>

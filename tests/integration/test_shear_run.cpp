@@ -16,7 +16,7 @@ namespace {
 const std::string kConfig = source_path("tests/data/small_shear.toml");
 
 // A summary's warnings without the inertial number's: the small box shears at 3000 mm/min,
-// I = 1.0-1.8e-3 at its loads, so every load of it is warned of (README, Inertial number;
+// I = 1.0-1.8e-3 at its loads, so every load of it is warned of (docs/running.md, Inertial number;
 // test SmallShearSeries.EachLoadReportsItsInertialNumberAndWholeCurveFeatures).
 nlohmann::json warnings_but_speed(const nlohmann::json& summary) {
   nlohmann::json out = nlohmann::json::array();
@@ -355,7 +355,7 @@ TEST_F(SmallShearSeries, EachLoadReportsItsInertialNumberAndWholeCurveFeatures) 
     EXPECT_EQ(w.back().get<std::string>().rfind("the inertial number is ", 0), 0u) << w.dump();
     const auto& f = s["curve_features"];
     // Features of the recorded rows: the residual is the window mean of the rows, which the
-    // strength (every step) matches to the sampling (README: 0.01-0.3 % on the small box).
+    // strength (every step) matches to the sampling (docs/running.md: 0.01-0.3 % on the small box).
     const double residual = f["residual_strength"].get<double>();
     EXPECT_NEAR(residual, s["shear_strength"].get<double>(), 0.01 * residual) << load;
     const double peak = f["peak_strength"].get<double>();
