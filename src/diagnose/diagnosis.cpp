@@ -316,6 +316,25 @@ Eigen::VectorXd joint_linearised_start(const DiagnosisProblem& p, const Diagnosi
   return x;
 }
 
+// d features / d strength at an extended fit: realisations 1..n (n = signature_seeds, at
+// most the replicates the fit was realised with) rerun at the strength moved by half the
+// probe's step toward the inside of its range, differenced with the fit's own (common random
+// numbers).
+Signature strength_slope_at_fit(const DiagnosisProblem& p, CountingModel& model, const Fit& fit, int k,
+                                const ModelPoint& at) {
+  const Candidate& c = p.candidates[static_cast<std::size_t>(k)];
+  const int n = std::min(p.settings.signature_seeds, static_cast<int>(fit.realisation_features.size()));
+  const double half_probe = 0.5 * (c.probe - c.neutral());
+  const double step = at.strength + half_probe <= c.parameter.upper ? half_probe : -half_probe;
+  ModelPoint moved = at;
+  moved.strength += step;
+  std::vector<std::pair<ModelPoint, int>> jobs;
+  for (int s = 1; s <= n; ++s) jobs.emplace_back(moved, s);
+  const std::vector<Eigen::VectorXd> at_step = model.batch(jobs);
+  const std::vector<Eigen::VectorXd> at_fit(fit.realisation_features.begin(), fit.realisation_features.begin() + n);
+  return signature_from_pairs(at_fit, at_step, step);
+}
+
 // Candidate k's extended model calibrated by a sequential search from x0 (one step along each
 // parameter toward the inside of its range around it), realised and judged.
 ExtendedFit calibrate_extended(const DiagnosisProblem& p, CountingModel& model, const DiagnosisResult& d, int k,
@@ -355,7 +374,15 @@ ExtendedFit calibrate_extended(const DiagnosisProblem& p, CountingModel& model, 
   Fit common = e.fit;
   judge_refit(p, common, A, lo, hi, d.baseline.noise);
   judge_refit(p, e.fit, A, lo, hi, e.fit.noise);
-  e.fit.sigma = sigma_under_noise(e.fit.noise, A);
+  // Each parameter's sd: the larger of two linearisations, the signature from the neutral
+  // value and the slope at the fit. They differ where the response curves: a mechanism that
+  // saturates (rolling resistance lifting a heap's angle) rises more steeply from zero than
+  // at the fit, and the signature alone would claim a strength known more closely than the
+  // data know it.
+  e.slope_at_fit = strength_slope_at_fit(p, model, e.fit, k, point(r.solution));
+  Eigen::MatrixXd at_fit = A;
+  at_fit.col(static_cast<Eigen::Index>(np)) = e.slope_at_fit.mean;
+  e.fit.sigma = sigma_under_noise(e.fit.noise, A).cwiseMax(sigma_under_noise(e.fit.noise, at_fit));
   e.chi_square_common = common.adequacy.chi_square;
   e.likelihood_ratio_p = boundary_likelihood_ratio_p(d.baseline.adequacy.chi_square, e.chi_square_common);
   e.bic = bayesian_information_criterion(e.chi_square_common, static_cast<int>(np + 1),

@@ -107,6 +107,9 @@ struct ExtendedFit {
   double bic = 0.0;                // under the baseline's noise
   Eigen::VectorXd start;           // where the kept search started (baseline parameters, then strength)
   int searches = 1;                // 2: the first search ended inadequate and a second began at the joint linearised fit
+  // d features / d strength at the fit (common random numbers, half the probe's step): where
+  // the response curves, the strength's sd comes from it rather than from the signature.
+  Signature slope_at_fit;
 };
 
 struct HeldOutPrediction {

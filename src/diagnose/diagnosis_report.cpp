@@ -182,7 +182,8 @@ std::string diagnosis_report(const DiagnosisProblem& p, const DiagnosisResult& d
     o << "\n";
   }
   if (!d.extended.empty()) {
-    o << "## 3. Extended models\n\n| model | chi2 (own noise) | p | chi2 (baseline noise) | likelihood ratio p | BIC | strength |\n|---|---|---|---|---|---|---|\n";
+    o << "## 3. Extended models\n\nEach strength's +/- is the larger of two linearisations: with its signature from the "
+       "neutral value, and with its slope at the fit (common random numbers).\n\n| model | chi2 (own noise) | p | chi2 (baseline noise) | likelihood ratio p | BIC | strength |\n|---|---|---|---|---|---|---|\n";
     o << "| baseline | " << fmt(d.baseline.adequacy.chi_square) << " | " << fmt(d.baseline.adequacy.p_value) << " | "
       << fmt(d.baseline.adequacy.chi_square) << " | - | " << fmt(d.baseline_bic) << " | - |\n";
     for (const ExtendedFit& e : d.extended) {

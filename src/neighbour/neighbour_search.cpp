@@ -183,13 +183,11 @@ void NeighbourSearch::rebuild(const ParticleArrays& particles, const std::vector
   build_particle_pairs(particles, threads, first, second);
   contacts.adopt_particle_pairs(std::move(first), std::move(second));
 
-  // A fixed sphere and a wall both move as prescribed: their contact would move neither, so
-  // it is not sought (a glued base may lie across a wall: scenario/glued_layer.hpp).
   std::vector<Index> wall_ids, wall_partners;
   for (std::size_t w = 0; w < walls.size(); ++w) {
     const Wall reach = candidate_reach(walls[w], skin_);
     for (std::size_t i = 0; i < particles.size(); ++i) {
-      if (particles.fixed[i]) continue;
+      if (particles.fixed[i] && !walls[w].meets_fixed_spheres) continue;
       const WallContactGeometry g = wall_sphere_geometry(reach, particles.position[i], particles.radius[i]);
       if (g.in_range && g.overlap > -skin_) {
         wall_ids.push_back(static_cast<Index>(w));

@@ -1,5 +1,5 @@
 // Linked-cell neighbour search with a Verlet skin.
-// Candidates: particle pairs with |x2 - x1| < R1 + R2 + skin, and free sphere-wall pairs whose
+// Candidates: particle pairs with |x2 - x1| < R1 + R2 + skin, and sphere-wall pairs (Wall::meets_fixed_spheres) whose
 // gap is below the skin (a finite cylinder taken as reaching one skin beyond its ends,
 // since the sphere's axial coordinate also changes by at most a skin). The lists stay
 // valid while every particle and every wall has moved no more than skin/2 since the last

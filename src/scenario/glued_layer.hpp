@@ -1,8 +1,8 @@
 // A monolayer of spheres glued to a base plate (z = 0), as angle of repose tests roughen their
 // base so that the heap's lowest spheres cannot roll away on a smooth plate (physics.md
 // section 8). The layer's spheres are fixed particles (not integrated), each resting on the
-// plate (centre at z = r), within a disc about the z axis. Fixed spheres take no part in wall
-// contacts (neighbour/neighbour_search.hpp), so the layer may lie across the repose cylinder.
+// plate (centre at z = r), within a disc about the z axis. The repose test's walls do not
+// touch them (Wall::meets_fixed_spheres), so the layer may lie across the cylinder.
 //
 // Placement, in two passes, each sphere resting on the plate and overlapping none glued (two
 // spheres of radii r, r_k resting on the plate overlap when their centres' horizontal

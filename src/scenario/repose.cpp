@@ -13,13 +13,17 @@ namespace colza {
 namespace {
 
 // Wall 0: the base plate (plane z = 0, facing up, wall material `base_material`); wall 1: the
-// cylinder, from z = 0 up through the generation volume.
+// cylinder, from z = 0 up through the generation volume. A glued base's spheres touch
+// neither: they are glued to the plate, and the cylinder stands on them.
 void build_repose_container(World& world, const ReposeSpec& r, std::uint16_t base_material) {
   Wall base = Wall::plane("base", Vec3::Zero(), Vec3::UnitZ());
   base.material = base_material;
+  base.meets_fixed_spheres = false;
   world.walls.push_back(base);
-  world.walls.push_back(Wall::cylinder("cylinder", Vec3::Zero(), Vec3::UnitZ(), 0.5 * r.cylinder_diameter, 0.0,
-                                       r.generation_height));
+  Wall cylinder = Wall::cylinder("cylinder", Vec3::Zero(), Vec3::UnitZ(), 0.5 * r.cylinder_diameter, 0.0,
+                                 r.generation_height);
+  cylinder.meets_fixed_spheres = false;
+  world.walls.push_back(cylinder);
 }
 
 double highest_top(const ParticleArrays& p) {

@@ -52,6 +52,9 @@ struct Wall {
   double axial_min = 0.0, axial_max = 0.0;     // cylinder extent along its axis from origin (m)
   Vec3 velocity = Vec3::Zero();                // m/s
   std::uint16_t material = 0;                  // index into the wall material table
+  // false: fixed spheres get no contact with this wall (a base glued to the plate, which the
+  // repose cylinder passes through as it is lifted); free spheres always do.
+  bool meets_fixed_spheres = true;
 
   // Filled by the force computation each step: total contact force exerted BY the
   // particles ON this wall (N), and its contact count.
