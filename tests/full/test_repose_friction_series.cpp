@@ -18,7 +18,7 @@
 
 using namespace colza::testing;
 
-TEST(ReposeFrictionSeries, TheAngleRisesWithFrictionAndSaturates) {
+TEST(ReposeFrictionSeries, TheAngleRisesWithFriction) {
   const ScratchDir dir;
   const std::string config = std::string(COLZA_SOURCE_DIR) + "/tests/data/repose_friction_series.toml";
   const std::vector<double> frictions = {0.1, 0.2, 0.4};
