@@ -39,7 +39,7 @@ void run_repose_scenario(const RunConfig& c, const RunOptions& opt, OutputStagin
   s["lift_time"] = r.lift_time;
   s["rest"] = rest_json(r.rest);
   s["base_friction"] = rs.base_friction;
-  s["base"] = {{"kind", rs.base == ReposeBase::kPlate ? "plate" : "glued_layer"},
+  s["base"] = {{"kind", repose_base_name(rs.base)},
                {"glued_spheres", r.glued_layer.size()},
                {"glued_layer_diameter", rs.base == ReposeBase::kPlate ? 0.0 : rs.glued_layer_diameter},
                {"base_height", r.base_height}};

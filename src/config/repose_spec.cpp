@@ -18,7 +18,9 @@ ReposeSpec read_repose(const ConfigNode& t, double particle_diameter_max, double
   r.cylinder_diameter = t.positive("cylinder_diameter", r.cylinder_diameter);
   r.fill_height = t.positive("fill_height", r.fill_height);
   r.generation_height = t.positive("generation_height", r.generation_height);
-  r.base = t.choice("base", "plate", {"plate", "glued_layer"}) == "plate" ? ReposeBase::kPlate : ReposeBase::kGluedLayer;
+  const char* plate = repose_base_name(ReposeBase::kPlate);
+  r.base = t.choice("base", plate, {plate, repose_base_name(ReposeBase::kGluedLayer)}) == plate ? ReposeBase::kPlate
+                                                                                               : ReposeBase::kGluedLayer;
   r.glued_layer_diameter = t.positive("glued_layer_diameter", kGluedLayerCylinderDiameters * r.cylinder_diameter);
   r.lift_speed = t.positive("lift_speed", r.lift_speed);
   r.base_friction = t.non_negative("base_friction", wall_friction);

@@ -13,6 +13,9 @@ namespace colza {
 
 enum class ReposeBase { kPlate, kGluedLayer };
 
+// The config's name of a base: "plate" | "glued_layer".
+inline const char* repose_base_name(ReposeBase b) { return b == ReposeBase::kPlate ? "plate" : "glued_layer"; }
+
 struct ReposeSpec {
   ReposeBase base = ReposeBase::kPlate;  // "plate" | "glued_layer"
   double glued_layer_diameter = 0.0;    // m, of the glued disc; read: default 3.5 x cylinder_diameter

@@ -2,8 +2,8 @@
 // paper's particles in a 60 mm cylinder filled 60 mm high, lifted fast). Checks the outputs,
 // the cone fit's plausibility, determinism, that spheres without rolling resistance form no
 // heap on the bare plate once the damping lets them move, that on a glued layer they do and it
-// rests, and bad input. That the angle grows with sliding friction and saturates is the
-// friction series (label full, tests/full/test_repose_friction_series.cpp).
+// rests, and bad input. That the angle grows with sliding friction is the friction series
+// (label full, tests/full/test_repose_friction_series.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,6 +17,24 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string kConfig = source_path("tests/data/small_repose.toml");
+
+// Runs the small heap with `sets` (--set options) into `out`: its summary.json, or an empty
+// object when the run failed (the failure is reported).
+nlohmann::json run_small_repose(const fs::path& out, const std::string& sets) {
+  const CliResult r = run_colza("run repose --quiet --config " + kConfig + " " + sets + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 0) << r.stderr_text;
+  return r.exit_code == 0 ? read_json(out / "summary.json") : nlohmann::json::object();
+}
+
+// Runs the small heap with `sets` into `out`, expecting it refused before anything is written:
+// exit 2, naming `key`. Its stderr.
+std::string expect_refused(const fs::path& out, const std::string& sets, const std::string& key) {
+  const CliResult r = run_colza("run repose --quiet --config " + kConfig + " " + sets + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << sets;
+  EXPECT_NE(r.stderr_text.find("key '" + key + "'"), std::string::npos) << r.stderr_text;
+  EXPECT_FALSE(fs::exists(out)) << sets;
+  return r.stderr_text;
+}
 
 class SmallRepose : public ::testing::Test {
  protected:
@@ -75,11 +93,8 @@ TEST(Repose, WithoutRollingResistanceAndWithLightDampingNoHeapForms) {
   // the column spreads into a layer: no surface sphere stands two diameters high, no cone is
   // fitted, and the summary says so. (With the paper's 0.7 the damping slows the collapse so
   // much that a heap stands for seconds without coming to rest: the fixture's run.)
-  const fs::path out = scratch_dir("repose-light-damping");
-  const CliResult r = run_colza("run repose --quiet --config " + kConfig +
-                                " --set integration.damping=0.1 --out " + out.string());
-  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
-  const auto s = read_json(out / "summary.json");
+  const auto s = run_small_repose(scratch_dir("repose-light-damping"), "--set integration.damping=0.1");
+  ASSERT_FALSE(s.empty());
   EXPECT_FALSE(s["angle_of_repose"]["valid"].get<bool>()) << s["angle_of_repose"].dump();
   EXPECT_NE(s["warnings"].dump().find("no cone could be fitted"), std::string::npos) << s["warnings"].dump();
 }
@@ -92,10 +107,9 @@ TEST(Repose, OnAGluedLayerTheHeapRestsAndNoSphereReachesThePlate) {
   // the heap rests, its angle is fitted, the summary describes the base, and no free sphere
   // within the glued disc (a diameter from its rim) touches the plate.
   const fs::path out = scratch_dir("repose-glued");
-  const CliResult r = run_colza("run repose --quiet --config " + kConfig +
-                                " --set repose.base=glued_layer --set repose.generation_height=0.18 --set repose.rest_max_time=8 --out " + out.string());
-  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
-  const auto s = read_json(out / "summary.json");
+  const auto s = run_small_repose(
+      out, "--set repose.base=glued_layer --set repose.generation_height=0.18 --set repose.rest_max_time=8");
+  ASSERT_FALSE(s.empty());
   EXPECT_TRUE(s["rest"]["converged"].get<bool>()) << s["rest"].dump();
   EXPECT_TRUE(s["angle_of_repose"]["valid"].get<bool>()) << s["angle_of_repose"].dump();
   EXPECT_EQ(s["base"]["kind"], "glued_layer");
@@ -122,20 +136,10 @@ TEST(Repose, OnAGluedLayerTheHeapRestsAndNoSphereReachesThePlate) {
 
 TEST(Repose, BadInputIsExit2NamingTheKey) {
   const fs::path out = scratch_dir("repose-bad") / "out";
-  CliResult r = run_colza("run repose --quiet --config " + kConfig + " --set repose.cylinder_diameter=0.02 --out " +
-                          out.string());
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.stderr_text.find("key 'repose.cylinder_diameter'"), std::string::npos) << r.stderr_text;
-  EXPECT_NE(r.stderr_text.find("narrower than 5 particle diameters"), std::string::npos) << r.stderr_text;
-  r = run_colza("run repose --quiet --config " + kConfig + " --set repose.base=carpet --out " + out.string());
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.stderr_text.find("key 'repose.base'"), std::string::npos) << r.stderr_text;
-  r = run_colza("run repose --quiet --config " + kConfig +
-                " --set repose.base=glued_layer --set repose.glued_layer_diameter=0.07 --out " + out.string());
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.stderr_text.find("key 'repose.glued_layer_diameter'"), std::string::npos) << r.stderr_text;
-  r = run_colza("run repose --quiet --config " + kConfig + " --set repose.lift_speed=0 --out " + out.string());
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.stderr_text.find("key 'repose.lift_speed'"), std::string::npos) << r.stderr_text;
-  EXPECT_FALSE(fs::exists(out));
+  const std::string narrow = expect_refused(out, "--set repose.cylinder_diameter=0.02", "repose.cylinder_diameter");
+  EXPECT_NE(narrow.find("narrower than 5 particle diameters"), std::string::npos) << narrow;
+  expect_refused(out, "--set repose.base=carpet", "repose.base");
+  expect_refused(out, "--set repose.base=glued_layer --set repose.glued_layer_diameter=0.07",
+                 "repose.glued_layer_diameter");
+  expect_refused(out, "--set repose.lift_speed=0", "repose.lift_speed");
 }
