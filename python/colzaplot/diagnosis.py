@@ -5,6 +5,7 @@ diagnosis's own z of the feature (measured - model over its total sd: the model'
 the measurement's uncertainty), with the 1 and 2 sd bands; and the candidates' signature
 similarity (cosine) matrix."""
 import os
+import textwrap
 
 import numpy as np
 
@@ -50,8 +51,10 @@ def plot_features(summary, out_dir):
                        rotation=30, ha="right", fontsize=7)
     ax.set_ylabel("z = (measured - model) / sd")
     verdict = summary.get("verdict") or {}
-    ax.set_title(f"Diagnosis: {verdict.get('kind', '')}" + (f", cause {verdict['cause']}" if verdict.get("cause") else ""),
-                 fontsize=10)
+    # The verdict and its reason: the first sentence of the verdict's text, wrapped.
+    reason = str(verdict.get("text", "")).split(". ")[0].rstrip(".")
+    ax.set_title(f"Diagnosis: {verdict.get('kind', '')}" + (f", cause {verdict['cause']}" if verdict.get("cause") else "")
+                 + ("\n" + "\n".join(textwrap.wrap(reason, 115, max_lines=3, placeholder=" ...")) if reason else ""), fontsize=8)
     ax.grid(alpha=0.3, axis="y")
     ax.legend(fontsize=7, loc="best")
     fig.tight_layout()

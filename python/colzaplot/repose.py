@@ -1,8 +1,9 @@
 """The angle of repose test's heap (scenario/repose.hpp): every sphere of the heap
-(heap_profile.csv: distance rho from the axis and top of the sphere in m, azimuth in deg)
-seen from the side with the cone fitted to the highest sphere of each sector and radial bin
-(analysis/heap_angle.hpp), top = apex - tan(angle) rho over the fit's range of rho, and
-seen from above, coloured by height."""
+(heap_profile.csv: distance rho from the axis and top of the sphere in m, azimuth in deg,
+in_fit 1 for the surface spheres the cone is fitted to) seen from the side with the cone
+fitted to the highest sphere of each sector and radial bin (analysis/heap_angle.hpp),
+top = apex - tan(angle) rho over the fit's range of rho, and seen from above, coloured by
+height."""
 import os
 
 import numpy as np
@@ -22,8 +23,12 @@ def plot(result_dir, out_dir):
 
     fig, (side, above) = common.figure(1, 2, gridspec_kw={"width_ratios": [1.6, 1.0]})
     side.axvspan(1e3 * fit_range[0], 1e3 * fit_range[1], color="tab:blue", alpha=0.08,
-                 label=f"the fit's range ({heap.get('points', 0)} surface spheres)")
-    side.plot(rho_mm, top_mm, "o", color="0.45", ms=2.5, label="top of every sphere")
+                 label="the fit's range of rho")
+    side.plot(rho_mm, top_mm, "o", color="0.6", ms=2.5, label="top of every sphere")
+    if "in_fit" in profile:  # a result written before heap_profile.csv had the column has no highlight
+        fit = profile["in_fit"] > 0.5
+        side.plot(rho_mm[fit], top_mm[fit], "o", color="tab:blue", ms=3.5,
+                  label=f"surface spheres fitted ({int(np.count_nonzero(fit))})")
     if heap.get("valid"):
         slope = np.tan(np.radians(heap["angle_deg"]))
         apex = heap["cone_apex_height"]
@@ -34,6 +39,14 @@ def plot(result_dir, out_dir):
         side.plot(1e3 * whole, 1e3 * np.maximum(apex - slope * whole, 0.0), color="tab:red", lw=0.8, ls="--")
     else:
         side.text(0.02, 0.95, "no valid cone fit", transform=side.transAxes, va="top")
+    # The side view ends at 1.5 heap radii: spheres that rolled farther are counted, not drawn.
+    radius_mm = 1e3 * heap.get("heap_radius", 0.0)
+    if radius_mm > 0.0:
+        side.set_xlim(0.0, 1.5 * radius_mm)
+        beyond = int(np.count_nonzero(rho_mm > 1.5 * radius_mm))
+        if beyond:
+            side.text(0.98, 0.02, f"{beyond} sphere{'s' if beyond > 1 else ''} beyond {1.5 * radius_mm:.0f} mm",
+                      transform=side.transAxes, ha="right", va="bottom", fontsize=7)
     side.set_xlabel("distance from the axis rho (mm)")
     side.set_ylabel("top of the sphere (mm)")
     side.set_ylim(bottom=0.0)

@@ -21,20 +21,37 @@ def _curve_panel(ax_tau, ax_dil, curve, summary):
         ax_tau.plot([w0, w1], [1e-3 * strength] * 2, color="tab:green", lw=2.5,
                     label=f"strength (window mean) {1e-3 * strength:.2f} kPa")
     features = summary.get("curve_features") or {}
-    peak, at = features.get("peak_strength"), features.get("peak_displacement")
-    if common.finite(peak) and common.finite(at):
-        # The peak strength: the largest mean stress over a trailing interval of peak_width.
-        width = features.get("peak_width")
-        over = f", mean over the {1e3 * width:g} mm before" if common.finite(width) else ""
-        ax_tau.plot([1e3 * at], [1e-3 * peak], "v", color="tab:red", ms=9,
-                    label=f"peak {1e-3 * peak:.2f} kPa at {1e3 * at:.2f} mm{over}")
+    peak, at, width = (features.get(k) for k in ("peak_strength", "peak_displacement", "peak_width"))
+    peak_interval = None
+    if common.finite(peak) and common.finite(at) and common.finite(width):
+        # The peak strength: the largest mean stress over a trailing interval of peak_width,
+        # drawn over the interval [at - width, at] whose mean it is.
+        peak_interval = (at - width, at)
+        ax_tau.plot([1e3 * (at - width), 1e3 * at], [1e-3 * peak] * 2, color="tab:red", lw=2.5,
+                    label=f"peak {1e-3 * peak:.2f} kPa: the largest mean over {1e3 * width:g} mm")
+    stiffness, d_f = features.get("initial_stiffness"), features.get("stiffness_displacement")
+    if common.finite(stiffness) and common.finite(d_f):
+        # The initial stiffness: the secant from the curve's start to where it first reaches a
+        # fraction of the peak, tau(d_f) = tau_0 + k (d_f - d_0).
+        d0, tau0 = curve["shear_displacement"][0], curve["shear_stress"][0]
+        ax_tau.plot([1e3 * d0, 1e3 * d_f], [1e-3 * tau0, 1e-3 * (tau0 + stiffness * (d_f - d0))], color="tab:purple",
+                    lw=1.2, ls="--", label=f"initial stiffness (secant) {1e-6 * stiffness:.3g} kPa/mm")
     ax_tau.set_ylabel("shear stress (kPa)")
     ax_tau.grid(alpha=0.3)
     ax_tau.legend(loc="lower right", fontsize=7)
-    ax_dil.plot(d_mm, 1e3 * curve["dilatancy"], color="tab:blue", lw=1.0, label="plate rise (dilatancy)")
+    ax_dil.plot(d_mm, 1e3 * curve["dilatancy"], color="tab:blue", lw=1.0, label="plate rise")
     psi = features.get("dilatancy_angle_deg")
-    if common.finite(psi):
-        ax_dil.text(0.01, 0.92, f"dilatancy angle {psi:.2f} deg", transform=ax_dil.transAxes, va="top", fontsize=8)
+    if common.finite(psi) and peak_interval is not None:
+        # The dilatancy angle: atan of the least-squares slope of the plate rise over the
+        # peak's interval, drawn there.
+        d, h = curve["shear_displacement"], curve["dilatancy"]
+        inside = (d >= peak_interval[0]) & (d <= peak_interval[1])
+        mid_d, mid_h = np.mean(d[inside]), np.mean(h[inside])
+        slope = np.tan(np.radians(psi))
+        ends = np.array(peak_interval)
+        ax_dil.plot(1e3 * ends, 1e3 * (mid_h + slope * (ends - mid_d)), color="tab:red", lw=2.0,
+                    label=f"dilatancy angle {psi:.1f} deg over the peak's interval")
+        ax_dil.legend(loc="lower right", fontsize=7)
     ax_dil.set_xlabel("shear displacement (mm)")
     ax_dil.set_ylabel("plate rise (mm)")
     ax_dil.grid(alpha=0.3)

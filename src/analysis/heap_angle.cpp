@@ -28,33 +28,40 @@ HeapAngle fit_heap_angle(const std::vector<double>& x, const std::vector<double>
   for (double r : radius) mean_d += 2.0 * r;
   mean_d /= static_cast<double>(n);
   const double bin = s.bin_width > 0.0 ? s.bin_width : mean_d;
-  const double toe = s.base_height + (s.toe_height > 0.0 ? s.toe_height : 2.0 * mean_d);
+  const double toe = s.toe_height > 0.0 ? s.toe_height : 2.0 * mean_d;  // above the base
 
-  // The surface sphere of each (sector, radial bin): its highest top, with that sphere's rho.
-  std::map<std::pair<std::size_t, long>, std::pair<double, double>> surface;  // -> (top, rho)
+  // The surface sphere of each (sector, radial bin): its highest top, with that sphere's rho
+  // and index.
+  struct SurfaceSphere {
+    double top, rho;
+    std::size_t index;
+  };
+  std::map<std::pair<std::size_t, long>, SurfaceSphere> surface;
   for (std::size_t i = 0; i < n; ++i) {
     const double dx = x[i] - s.centre_x, dy = y[i] - s.centre_y;
-    const double rho = std::hypot(dx, dy), top = z[i] + radius[i];
+    const double rho = std::hypot(dx, dy), top = z[i] + radius[i] - s.base_height;  // above the base
     h.height = std::max(h.height, top);
     const double turn = (std::atan2(dy, dx) + kPi) / (2.0 * kPi);  // 0..1
     const std::size_t sector = std::min(s.sectors - 1, static_cast<std::size_t>(turn * static_cast<double>(s.sectors)));
     const auto key = std::make_pair(sector, static_cast<long>(std::floor(rho / bin)));
     auto it = surface.find(key);
-    if (it == surface.end() || top > it->second.first) surface[key] = {top, rho};
+    if (it == surface.end() || top > it->second.top) surface[key] = {top, rho, i};
   }
   h.surface_spheres = surface.size();
   for (const auto& [key, cell] : surface)
-    if (cell.first >= toe) h.radius = std::max(h.radius, cell.second);
+    if (cell.top >= toe) h.radius = std::max(h.radius, cell.rho);
   h.fit_rho_min = s.inner * h.radius;
   h.fit_rho_max = s.outer * h.radius;
   double sr = 0.0, st = 0.0;
   std::vector<std::pair<double, double>> pts;  // (rho, top)
   for (const auto& [key, cell] : surface)
-    if (cell.second >= h.fit_rho_min && cell.second <= h.fit_rho_max) {
-      pts.emplace_back(cell.second, cell.first);
-      sr += cell.second;
-      st += cell.first;
+    if (cell.rho >= h.fit_rho_min && cell.rho <= h.fit_rho_max) {
+      pts.emplace_back(cell.rho, cell.top);
+      h.fit_spheres.push_back(cell.index);
+      sr += cell.rho;
+      st += cell.top;
     }
+  std::sort(h.fit_spheres.begin(), h.fit_spheres.end());
   h.points = pts.size();
   // A heap narrower than three bins (a sphere or two stacked on a spread layer) or a fit
   // through fewer than 5 surface spheres has no slope worth a number.

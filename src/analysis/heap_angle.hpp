@@ -3,12 +3,12 @@
 // so that a run and a measured profile (points of the surface) go through the same fit.
 //
 // Method: about the vertical axis through (centre_x, centre_y), every sphere has a distance
-// rho from the axis and a top z + r. The plane is cut into `sectors` equal sectors and, along
+// rho from the axis and a top z + r - base_height above the base, which lies at `base_height`
+// (the plate, or the top of a layer glued to it). The plane is cut into `sectors` equal sectors and, along
 // rho, into bins of `bin_width` (default: the mean diameter); the surface sphere of a cell is
 // its highest top. The heap's radius R is the largest rho of a surface sphere whose top stands
-// at least `toe_height` above the base, which lies at `base_height` (the plate, or the top of
-// a layer glued to it; default toe: two mean diameters: spheres lying one layer deep on the
-// base, or rolled away, are not heap). The fit is the least-squares line
+// at least `toe_height` above the base (default: two mean diameters: spheres lying one layer
+// deep on the base, or rolled away, are not heap). The fit is the least-squares line
 // top = a - tan(alpha) rho through the surface spheres with inner R <= rho <= outer R
 // (defaults 0.25 and 0.75: away from the rounded top and the spread toe):
 //   alpha = atan(tan_alpha), its error = se(tan_alpha) / (1 + tan_alpha^2) (rad -> deg),
@@ -35,11 +35,12 @@ struct HeapAngle {
   double angle_deg = 0.0;
   double angle_error_deg = 0.0;  // one standard error
   double tan_angle = 0.0;
-  double intercept = 0.0;        // m, a: the fitted cone's apex height
-  double height = 0.0;           // m, the highest top
+  double intercept = 0.0;        // m, a: the fitted cone's apex height above base_height
+  double height = 0.0;           // m, the highest top above base_height
   double radius = 0.0;           // m, R
   double fit_rho_min = 0.0, fit_rho_max = 0.0;  // m
   std::size_t points = 0;        // surface spheres in the fit
+  std::vector<std::size_t> fit_spheres;  // their indices in the input arrays, ascending
   std::size_t surface_spheres = 0;
   double r2 = 0.0;
 };

@@ -164,7 +164,7 @@ nlohmann::json run_repose_outputs(const RunConfig& c, const fs::path& dir, doubl
     out["heap_fit_r2"] = h.r2;
   }
   fs::create_directories(dir);
-  write_csv((dir / "heap_profile.csv").string(), heap_profile_table(r.final_state, r.base_height));
+  write_csv((dir / "heap_profile.csv").string(), heap_profile_table(r.final_state, r.base_height, r.heap));
   return out;
 }
 

@@ -125,7 +125,7 @@ ReachVerdict judge_reach(const std::vector<ResponseSurface>& s, const Problem& p
     if (std::abs(y[i] - t[i]) > sig[i]) missed.push_back(i);
   if (missed.empty()) return {};
   const std::string bounds = "inside the bounds " + point_text(p, lower) + " .. " + point_text(p, upper);
-  auto measured_value = [&](std::size_t i) { return fmt(t[i]) + " +/- " + fmt(sig[i]) + " " + p.targets[i].unit; };
+  auto measured_value = [&](std::size_t i) { return fmt(t[i]) + " +/- " + fmt(sig[i]) + unit_suffix(p.targets[i].unit); };
   auto measured = [&](std::size_t i) { return "the measured " + p.targets[i].name + " = " + measured_value(i); };
   std::string unreachable, first;
   for (std::size_t i : missed) {

@@ -92,7 +92,7 @@ void determination_warnings(const Problem& p, CalibrationResult& r) {
     const double tolerance = 1e-9 * range;
     const bool on_lower = std::abs(xj - q.lower) <= tolerance, on_upper = std::abs(xj - q.upper) <= tolerance;
     if (on_lower || on_upper) {
-      r.warnings.push_back(q.name + " = " + fmt(xj) + " " + q.unit + " lies on its " + (on_lower ? "lower" : "upper") +
+      r.warnings.push_back(q.name + " = " + fmt(xj) + unit_suffix(q.unit) + " lies on its " + (on_lower ? "lower" : "upper") +
                            " bound: the solution is held inside [" + fmt(q.lower) + ", " + fmt(q.upper) +
                            "], and the targets may be met better beyond it, so the value is the bound's, not a "
                            "measurement. Move the design (and the bound) past it, or check the measured data");
@@ -107,10 +107,10 @@ void determination_warnings(const Problem& p, CalibrationResult& r) {
     }
     const bool arbitrary = interval > range;
     r.warnings.push_back(q.name + (arbitrary ? " is not determined" : " is only weakly determined") +
-                         " by these targets: its 95 % interval, +/- 2 sigma = +/- " + fmt(2.0 * sigma) + " " + q.unit +
-                         " (" + fmt(interval) + " " + q.unit + " wide), is wider than " +
+                         " by these targets: its 95 % interval, +/- 2 sigma = +/- " + fmt(2.0 * sigma) + unit_suffix(q.unit) +
+                         " (" + fmt(interval) + unit_suffix(q.unit) + " wide), is wider than " +
                          (arbitrary ? "its" : "half its") + " design range " + fmt(q.lower) + " .. " + fmt(q.upper) +
-                         " " + q.unit + " (across it the surfaces change " + effects + "); " +
+                         unit_suffix(q.unit) + " (across it the surfaces change " + effects + "); " +
                          (arbitrary ? "its value in the solution is arbitrary" : "its value in the solution is rough") +
                          ": fix it from other data, or add a target that depends on it");
   }

@@ -80,7 +80,7 @@ void run_repose_scenario(const RunConfig& c, const RunOptions& opt, OutputStagin
   add_snapshots_summary(s, r.snapshots);
   add_timing(s, r.stages);
 
-  const Table profile = heap_profile_table(r.final_state, r.base_height);
+  const Table profile = heap_profile_table(r.final_state, r.base_height, r.heap);
   write_csv(out.path("heap_profile.csv"), profile);
   write_packing(out.path("packing.txt"), r.column);
   write_packing(out.path("heap.txt"), r.final_state);

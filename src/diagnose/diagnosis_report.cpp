@@ -150,7 +150,7 @@ std::string diagnosis_report(const DiagnosisProblem& p, const DiagnosisResult& d
     o << "\n";
   }
   o << "\nAdequacy: chi2 = " << fmt(d.baseline.adequacy.chi_square) << " on " << d.baseline.adequacy.degrees_of_freedom
-    << " degrees of freedom, p = " << fmt(d.baseline.adequacy.p_value) << " (alpha = " << fmt(p.settings.significance)
+    << (d.baseline.adequacy.degrees_of_freedom == 1 ? " degree" : " degrees") << " of freedom, p = " << fmt(d.baseline.adequacy.p_value) << " (alpha = " << fmt(p.settings.significance)
     << "). Baseline parameters:";
   for (std::size_t j = 0; j < p.parameters.size(); ++j)
     o << " " << p.parameters[j].name << " = " << fmt(d.baseline.parameters[static_cast<Eigen::Index>(j)]) << " +/- "
@@ -191,7 +191,7 @@ std::string diagnosis_report(const DiagnosisProblem& p, const DiagnosisResult& d
       const Eigen::Index j = e.fit.parameters.size() - 1;
       o << "| " << c.name << " | " << fmt(e.fit.adequacy.chi_square) << " | " << fmt(e.fit.adequacy.p_value) << " | "
         << fmt(e.chi_square_common) << " | " << fmt(e.likelihood_ratio_p) << " | " << fmt(e.bic) << " | "
-        << c.parameter.name << " = " << fmt(e.fit.parameters[j]) << " +/- " << fmt(e.fit.sigma[j]) << " " << c.parameter.unit
+        << c.parameter.name << " = " << fmt(e.fit.parameters[j]) << " +/- " << fmt(e.fit.sigma[j]) << unit_suffix(c.parameter.unit)
         << (e.fit.strength_at_upper_bound ? " (at its physical top)" : "") << " |\n";
     }
     o << "\n";

@@ -58,7 +58,7 @@ Verdict decide(const DiagnosisProblem& p, const Fit& baseline, double baseline_b
   Verdict v;
   const AdequacyTest& a = baseline.adequacy;
   const std::string adequacy_text = "chi2 = " + fmt(a.chi_square) + " on " + std::to_string(a.degrees_of_freedom) +
-                                    " degrees of freedom, p = " + fmt(a.p_value);
+                                    (a.degrees_of_freedom == 1 ? " degree" : " degrees") + " of freedom, p = " + fmt(a.p_value);
   if (a.passes) {
     v.kind = VerdictKind::kNoDiscrepancy;
     v.text = "No significant discrepancy: the calibrated baseline reproduces every feature within its noise (" +
@@ -147,7 +147,7 @@ Verdict decide(const DiagnosisProblem& p, const Fit& baseline, double baseline_b
   const std::size_t j = static_cast<std::size_t>(best.fit.parameters.size() - 1);
   v.text = "Explained by " + x.name + ": the baseline misses the data (" + adequacy_text + "); with " +
            x.parameter.name + " = " + fmt(best.fit.parameters[static_cast<Eigen::Index>(j)]) + " +/- " +
-           fmt(best.fit.sigma[static_cast<Eigen::Index>(j)]) + " " + x.parameter.unit +
+           fmt(best.fit.sigma[static_cast<Eigen::Index>(j)]) + unit_suffix(x.parameter.unit) +
            " the extended model passes (chi2 = " + fmt(best.fit.adequacy.chi_square) + ", p = " +
            fmt(best.fit.adequacy.p_value) + "), the likelihood ratio against the baseline has p = " +
            fmt(best.likelihood_ratio_p) + " and its BIC is " + fmt(best.bic) + " against the baseline's " + fmt(baseline_bic) + ".";

@@ -22,4 +22,7 @@ inline std::string format_shortest(double value) {
   return std::string(buffer, result.ptr);
 }
 
+// A value's unit as printed after it: " " + unit, or nothing for a dimensionless one ("" or "-").
+inline std::string unit_suffix(const std::string& unit) { return unit.empty() || unit == "-" ? "" : " " + unit; }
+
 }  // namespace colza

@@ -73,12 +73,15 @@ HeapFitSettings repose_fit_settings(const ReposeSpec& r, double base_height) {
   return s;
 }
 
-Table heap_profile_table(const ParticleArrays& heap, double base_height) {
-  Table profile({"rho", "azimuth_deg", "top"}, {"m", "deg", "m"});
+Table heap_profile_table(const ParticleArrays& heap, double base_height, const HeapAngle& fit) {
+  Table profile({"rho", "azimuth_deg", "top", "in_fit"}, {"m", "deg", "m", "1"});
+  std::vector<char> in_fit(heap.size(), 0);
+  for (const std::size_t i : fit.fit_spheres)
+    if (i < heap.size()) in_fit[i] = 1;
   for (std::size_t i = 0; i < heap.size(); ++i) {
     const double x = heap.position[i].x(), y = heap.position[i].y();
     profile.add_row({std::hypot(x, y), std::atan2(y, x) * 180.0 / kPi,
-                     heap.position[i].z() + heap.radius[i] - base_height});
+                     heap.position[i].z() + heap.radius[i] - base_height, in_fit[i] ? 1.0 : 0.0});
   }
   return profile;
 }

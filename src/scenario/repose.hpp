@@ -48,9 +48,10 @@ ReposeResult run_repose(const RunConfig& config, Progress& progress, double snap
 HeapFitSettings repose_fit_settings(const ReposeSpec& r, double base_height);
 
 // The heap's profile, one row per sphere: rho (m, its distance from the axis), azimuth_deg
-// (deg, atan2(y, x)) and top (m, z + r - base_height: its height above the heap's base, the
-// plate or the glued layer's mean top): heap_profile.csv, a valid measured heap profile
-// (calibration/measured_heap_profile.hpp).
-Table heap_profile_table(const ParticleArrays& heap, double base_height);
+// (deg, atan2(y, x)), top (m, z + r - base_height: its height above the heap's base, the
+// plate or the glued layer's mean top) and in_fit (1 for a surface sphere the cone `fit` was
+// fitted to, else 0): heap_profile.csv, a valid measured heap profile
+// (calibration/measured_heap_profile.hpp, which ignores in_fit).
+Table heap_profile_table(const ParticleArrays& heap, double base_height, const HeapAngle& fit);
 
 }  // namespace colza

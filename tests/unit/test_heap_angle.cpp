@@ -58,6 +58,15 @@ TEST(HeapAngle, RecoversTheAngleOfSpheresOnACone) {
     EXPECT_NEAR(a.radius, radius, 0.0065) << alpha;
     EXPECT_NEAR(a.height, 0.060, 0.002) << alpha;
     EXPECT_GT(a.points, 50u) << alpha;
+    // The fit's spheres, named by index: as many as its points, each a sphere on the cone
+    // (cone() adds it at an even index, the buried one below it at the odd one after), in the
+    // fit's range of rho.
+    ASSERT_EQ(a.fit_spheres.size(), a.points) << alpha;
+    for (const std::size_t i : a.fit_spheres) {
+      EXPECT_EQ(i % 2, 0u) << alpha << ": sphere " << i << " is buried";
+      const double rho = std::hypot(heap.x[i], heap.y[i]);
+      EXPECT_TRUE(rho >= a.fit_rho_min && rho <= a.fit_rho_max) << alpha << ": sphere " << i;
+    }
   }
 }
 

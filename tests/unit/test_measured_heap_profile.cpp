@@ -76,12 +76,15 @@ TEST(MeasuredHeapProfile, ColzasOwnHeapProfileGivesTheRunsAngle) {
     const HeapAngle run = fit_heap_angle(x, y, z, radius, repose_fit_settings(c.repose, base));
     const ScratchDir dir;
     const std::string csv = (dir.path() / "heap_profile.csv").string();
-    write_csv(csv, heap_profile_table(heap, base));
+    write_csv(csv, heap_profile_table(heap, base, run));
     const HeapAngle read = measured_heap_angle(csv, c, "spec.toml", "tests.curve");
     ASSERT_TRUE(run.valid && read.valid) << "base " << base;
     EXPECT_NEAR(read.angle_deg, run.angle_deg, 1e-6) << "base " << base;
     EXPECT_NEAR(read.radius, run.radius, 1e-9) << "base " << base;
-    EXPECT_NEAR(read.height, run.height - base, 1e-9) << "base " << base;
+    // Heights above the base on both sides: the heap's height and the cone's apex.
+    EXPECT_NEAR(read.height, run.height, 1e-9) << "base " << base;
+    EXPECT_NEAR(run.height, 0.060, 0.002) << "base " << base;
+    EXPECT_NEAR(read.intercept, run.intercept, 1e-9) << "base " << base;
   }
 }
 
