@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "calibration/lab_tests.hpp"
 #include "calibration/run_features.hpp"
 #include "io/format_number.hpp"
 
@@ -13,8 +14,6 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string num17(double v) { return format_significant(v, 17); }  // round-trips a double
-
-Scenario scenario_of(const Spec& s) { return s.stage == Stage::kShear ? Scenario::kShear : Scenario::kOedometer; }
 
 // The spec's overrides and one "key=value" per parameter at x.
 std::vector<std::string> overrides_at(const Spec& s, const Eigen::VectorXd& x, std::vector<std::string> o) {
@@ -38,7 +37,7 @@ DemModel::DemModel(const Spec& spec, fs::path runs_dir, bool verbose)
 
 RunRequest DemModel::request_for(const Eigen::VectorXd& x, int replicate) const {
   RunRequest r;
-  r.scenario = scenario_of(spec_);
+  r.scenario = scenario_of(spec_.stage);
   r.config_path = spec_.model_config;
   std::vector<std::string> o = spec_.model_set;
   if (spec_.stage == Stage::kShear) {

@@ -60,16 +60,17 @@ const std::vector<LabTest>& lab_tests() {
       {"shear", Scenario::kShear, {"cohesion", "tan_phi", "friction_angle_deg", "<load>/shear_strength"},
        &read_measured_shear, nullptr},
       {"load_unload", Scenario::kOedometer,
-       {"cycle<k>/loop_area", "cycle<k>/permanent_strain", "cycle<k>/rebound_strain", "branch<b>/modulus@<sigma*>Pa",
-        "branch<b>/lateral_ratio@<sigma*>Pa"},
-       nullptr, &measured_load_unload_curve_features},
+       {"cycle<k>/loop_area", "cycle<k>/strain_at_turn", "cycle<k>/permanent_strain", "cycle<k>/rebound_strain",
+        "branch<b>/modulus@<sigma*>Pa", "branch<b>/lateral_ratio@<sigma*>Pa", "branch<b>/lateral_ratio_end",
+        "bulk_density"},
+       &read_measured_load_unload_stage, &measured_load_unload_curve_features},
       {"shear_curve", Scenario::kShear,
        {"<load>/peak_strength", "<load>/residual_strength", "<load>/drop", "<load>/max_dilation",
         "<load>/dilatancy_angle_deg", "<load>/initial_stiffness"},
        nullptr, &measured_shear_curve_features},
       {"repose", Scenario::kRepose,
        {"angle_of_repose_deg", "angle_of_repose_error_deg", "heap_height", "heap_radius", "column_bulk_density"},
-       nullptr, &measured_heap_profile_features},
+       &read_measured_repose_stage, &measured_heap_profile_features},
   };
   return kTests;
 }
@@ -81,5 +82,35 @@ const LabTest& lab_test(const std::string& name) {
 }
 
 const LabTest& lab_test(Stage stage) { return lab_test(std::string(to_string(stage))); }
+
+Scenario scenario_of(Stage stage) { return lab_test(stage).scenario; }
+
+namespace {
+
+// `name` against one of a test's feature patterns: a "<...>" stands for one or more
+// characters other than '/' (a load label, a cycle or branch number, a stress).
+bool matches_pattern(const std::string& pattern, std::size_t p, const std::string& name, std::size_t n) {
+  if (p == pattern.size()) return n == name.size();
+  if (pattern[p] == '<') {
+    const std::size_t close = pattern.find('>', p);
+    for (std::size_t end = n + 1; end <= name.size() && name[end - 1] != '/'; ++end)
+      if (matches_pattern(pattern, close + 1, name, end)) return true;
+    return false;
+  }
+  return n < name.size() && pattern[p] == name[n] && matches_pattern(pattern, p + 1, name, n + 1);
+}
+
+}  // namespace
+
+bool names_a_feature_of(const LabTest& test, const std::string& name) {
+  return std::any_of(test.features.begin(), test.features.end(),
+                     [&](const std::string& pattern) { return matches_pattern(pattern, 0, name, 0); });
+}
+
+std::string lab_test_feature_list(const LabTest& test) {
+  std::string list;
+  for (const std::string& f : test.features) list += (list.empty() ? "" : ", ") + f;
+  return list;
+}
 
 }  // namespace colza::calibration

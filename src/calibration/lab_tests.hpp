@@ -40,5 +40,13 @@ const std::vector<LabTest>& lab_tests();
 // The row of `name`, or of a calibration stage; std::out_of_range when there is none.
 const LabTest& lab_test(const std::string& name);
 const LabTest& lab_test(Stage stage);
+// The scenario a calibration stage's runs are.
+Scenario scenario_of(Stage stage);
+
+// Whether `name` is one of the test's features ("<...>" in a pattern stands for a load
+// label, a cycle or branch number, a stress: one or more characters other than '/').
+bool names_a_feature_of(const LabTest& test, const std::string& name);
+// Its feature patterns, ", "-separated, for a message.
+std::string lab_test_feature_list(const LabTest& test);
 
 }  // namespace colza::calibration

@@ -13,6 +13,31 @@ std::string g(double v, int digits = 6) { return format_significant(v, digits); 
 
 std::string shear_source(const Spec& s) { return s.measured_curves.empty() ? "results" : "curves"; }
 
+// Load_unload, repose: each target stated or read off the measured curve.
+nlohmann::json feature_targets_summary(const Spec& s) {
+  nlohmann::json m;
+  m["source"] = s.measured_file.empty() ? "values" : "curve";
+  if (!s.measured_file.empty()) {
+    m["file"] = s.measured_file;
+    m["curve_features"] = s.measured_curve_features;
+  }
+  m["targets_from_curve"] = s.targets_from_curve;
+  return m;
+}
+
+std::string feature_targets_section(const Spec& s) {
+  std::ostringstream o;
+  if (!s.measured_file.empty())
+    o << "Features of the measured curve `" << s.measured_file << "`, reduced by the code that reduces the runs' "
+      << "(in the model's geometry):\n\n| feature | value |\n|---|---|\n";
+  for (const auto& [name, value] : s.measured_curve_features) o << "| " << name << " | " << g(value) << " |\n";
+  o << (s.measured_file.empty() ? "" : "\n") << "Targets:\n\n| feature | measured | uncertainty | from |\n|---|---|---|---|\n";
+  for (const auto& t : s.problem.targets)
+    o << "| " << t.name << " | " << g(t.value) << " | " << g(t.uncertainty) << " | "
+      << (s.targets_from_curve.count(t.name) ? "the curve" : "the spec") << " |\n";
+  return o.str();
+}
+
 }  // namespace
 
 nlohmann::json measured_data_summary(const Spec& s) {
@@ -59,6 +84,10 @@ nlohmann::json measured_data_summary(const Spec& s) {
       m["loads_simulated"] = s.loads;
       break;
     }
+    case Stage::kLoadUnload:
+    case Stage::kRepose:
+      m = feature_targets_summary(s);
+      break;
   }
   return m;
 }
@@ -104,6 +133,10 @@ std::string measured_data_section(const Spec& s) {
       }
       o << "\nC and tan(Phi) are the least-squares line through these points (R^2 = " << g(s.measured_fit_r2, 4)
         << ").\n";
+      break;
+    case Stage::kLoadUnload:
+    case Stage::kRepose:
+      o << feature_targets_section(s);
       break;
   }
   return o.str();

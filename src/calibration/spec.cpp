@@ -19,6 +19,8 @@ const char* to_string(Stage s) {
     case Stage::kDensity: return "density";
     case Stage::kCompression: return "compression";
     case Stage::kShear: return "shear";
+    case Stage::kLoadUnload: return "load_unload";
+    case Stage::kRepose: return "repose";
   }
   return "?";
 }
@@ -53,7 +55,10 @@ Stage read_stage(const ConfigNode& root) {
   if (stage == "density") return Stage::kDensity;
   if (stage == "compression") return Stage::kCompression;
   if (stage == "shear") return Stage::kShear;
-  root.fail("stage", "must be \"density\", \"compression\" or \"shear\", got \"" + stage + "\"");
+  if (stage == "load_unload") return Stage::kLoadUnload;
+  if (stage == "repose") return Stage::kRepose;
+  root.fail("stage", "must be \"density\", \"compression\", \"shear\", \"load_unload\" or \"repose\", got \"" +
+                         stage + "\"");
 }
 
 // [measured], by the stage's reader (lab_tests.hpp).

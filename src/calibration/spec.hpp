@@ -7,6 +7,8 @@
 // [measured] to the stage's reader in the lab-test table (lab_tests.hpp, spec_measured.hpp);
 // the fields are read through a ConfigNode in the spec's words (spec_fields.hpp).
 #pragma once
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -16,7 +18,7 @@
 
 namespace colza::calibration {
 
-enum class Stage { kDensity, kCompression, kShear };
+enum class Stage { kDensity, kCompression, kShear, kLoadUnload, kRepose };
 const char* to_string(Stage s);
 
 struct Spec {
@@ -36,12 +38,16 @@ struct Spec {
   Problem problem;                  // parameters, targets, design, sequential settings
   std::vector<double> loads;        // shear: normal stresses of each design run's series (Pa)
   // What the targets were derived from, for the report.
-  std::string measured_file;        // compression: the curve; shear: the results CSV (empty when curves are given)
+  std::string measured_file;        // compression, load_unload, repose: the curve; shear: the results CSV (empty when curves are given)
   std::vector<std::pair<double, double>> measured_points;  // shear: (sigma, tau) in Pa; compression: empty
   std::vector<MeasuredShearCurve> measured_curves;         // shear: the curves the strengths came from, if any
   StrengthDefinition strength;      // shear: which strength the targets are made of (measured.strength)
   double measured_fit_r2 = 0.0;     // compression: R^2 of the measured curve's quadratic; shear: of the line
   double measured_c0 = 0.0;         // compression: c0 of the measured curve (N), not a target
+  // load_unload, repose: every feature the measured curve gives (run_features.hpp names, SI),
+  // and the targets read off it rather than stated.
+  std::map<std::string, double> measured_curve_features;
+  std::set<std::string> targets_from_curve;
   std::vector<std::string> warnings;
 };
 

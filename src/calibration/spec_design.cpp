@@ -4,6 +4,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "calibration/lab_tests.hpp"
 #include "calibration/spec_fields.hpp"
 #include "calibration/spec_model.hpp"
 #include "config/plausibility.hpp"

@@ -21,6 +21,14 @@ void read_measured_compression(const ConfigNode& measured, Spec& s);
 // uncertainties and correlation, and the loads of each design run's series (s.loads).
 void read_measured_shear(const ConfigNode& measured, Spec& s);
 
+// Load_unload and repose: [[measured.features]] (name, value, uncertainty, unit), each a
+// feature a run of the test yields (lab_tests.hpp), its value stated or read off the measured
+// curve ([measured] curve: a load-unload curve with sample_height in m, or a heap profile;
+// data/measured/README.md) by the code that reduces a run's. Load_unload needs
+// oedometer.cycles in the model.
+void read_measured_load_unload_stage(const ConfigNode& measured, Spec& s);
+void read_measured_repose_stage(const ConfigNode& measured, Spec& s);
+
 // [[1, rho], [rho, 1]]: the correlation matrix of two targets from one fit.
 Eigen::MatrixXd correlation_of_two(double rho);
 

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "calibration/lab_tests.hpp"
 #include "calibration/spec_fields.hpp"
 #include "config/config_error.hpp"
 #include "io/format_number.hpp"
@@ -9,8 +10,6 @@
 namespace colza::calibration {
 
 namespace fs = std::filesystem;
-
-Scenario scenario_of(Stage stage) { return stage == Stage::kShear ? Scenario::kShear : Scenario::kOedometer; }
 
 std::string resolve_spec_path(const std::string& spec_file, const std::string& value) {
   fs::path p(value);
@@ -27,13 +26,17 @@ void read_spec_model(const ConfigNode& model, Spec& s) {
   s.shared_packing = packing == "shared";
   if (s.shared_packing && s.stage == Stage::kDensity)
     model.fail("packing", "the density stage measures the settled packing: every run must settle (\"per_run\")");
+  if (s.shared_packing && s.stage == Stage::kRepose)
+    model.fail("packing", "a repose run settles its own column in the cylinder: every run must settle (\"per_run\")");
   reject_unknown_spec_keys(model);
   try {
     s.base = load_run_config(scenario_of(s.stage), s.model_config, s.model_set);
   } catch (const ConfigError& e) {
     throw ConfigError(s.file, "model", std::string("the model config does not load: ") + e.what());
   }
-  s.fixed_packing_file = s.stage == Stage::kShear ? s.base.shear_box.packing_file : s.base.oedometer.packing_file;
+  s.fixed_packing_file = s.stage == Stage::kShear    ? s.base.shear_box.packing_file
+                         : s.stage == Stage::kRepose ? std::string()
+                                                     : s.base.oedometer.packing_file;
 }
 
 std::string model_rejects(const Spec& s, const std::string& key, double value, RunConfig* accepted) {

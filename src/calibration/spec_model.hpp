@@ -8,9 +8,6 @@
 
 namespace colza::calibration {
 
-// The scenario a stage's runs are: the shear box for shear, the oedometer otherwise.
-Scenario scenario_of(Stage stage);
-
 // `value` (a path in the spec) against the spec's folder when relative.
 std::string resolve_spec_path(const std::string& spec_file, const std::string& value);
 

@@ -37,6 +37,8 @@ std::string spec_key(const Spec& spec, const std::string& key) {
     if (t.name == key) {
       if (spec.stage == Stage::kDensity) return "measured.bulk_density";
       if (spec.stage == Stage::kCompression) return spec.measured_file.empty() ? "measured." + key : "measured.curve";
+      if (spec.stage == Stage::kLoadUnload || spec.stage == Stage::kRepose)
+        return spec.targets_from_curve.count(key) ? "measured.curve" : "measured.features";
       return spec.measured_curves.empty() ? "measured.results" : "measured.curves";
     }
   if (key == "design") return "parameters[].design";
@@ -237,6 +239,14 @@ int calibrate_command(const CalibrateOptions& opt) {
                        "strengths of equal, independent uncertainty at the measured loads; set [measured] correlation "
                        "(0: independent) if the stated uncertainties did not come from such a fit.";
   }
+  if (spec.stage == Stage::kRepose)
+    ctx.notes += std::string(ctx.notes.empty() ? "" : " ") +
+                 "Each design run is an angle of repose test (the column settled in the cylinder, the cylinder lifted, "
+                 "the heap at rest); its angle is the cone fitted to the heap's surface spheres (docs/running.md).";
+  if (spec.stage == Stage::kLoadUnload)
+    ctx.notes += std::string(ctx.notes.empty() ? "" : " ") +
+                 "Each design run is an oedometer load-unload test (oedometer.cycles); its features come from its "
+                 "curve by the code that reduces the measured curve.";
   if (spec.stage == Stage::kCompression)
     ctx.notes += std::string(ctx.notes.empty() ? "" : " ") +
                  (spec.correlation_given ? "The correlation of the measured c1 and c2 is the spec's ([measured] correlation)."

@@ -1,4 +1,4 @@
-// `colza calibrate density|compression|shear --spec FILE --out DIR [--mode paper|sequential]
+// `colza calibrate density|compression|shear|load_unload|repose --spec FILE --out DIR [--mode paper|sequential]
 //  [--jobs N] [--threads N] [--force] [--quiet]`: the paper's staged calibration (sections 2.2, 3.2, 3.3)
 // or a sequential trust-region refinement, written to DIR/summary.json and DIR/report.md;
 // design runs are kept in DIR/runs/<fingerprint>/ (or --runs RUNS/<fingerprint>/) and reused when

@@ -134,9 +134,9 @@ int main(int argc, char** argv) {
 
   colza::CalibrateOptions cal;
   CLI::App* calibrate = app.add_subcommand("calibrate", "calibrate micro-parameters to measured data (paper sections 3.2-3.3)");
-  calibrate->add_option("stage", cal.stage, "density | compression | shear")
+  calibrate->add_option("stage", cal.stage, "density | compression | shear | load_unload | repose")
       ->required()
-      ->check(CLI::IsMember({"density", "compression", "shear"}));
+      ->check(CLI::IsMember({"density", "compression", "shear", "load_unload", "repose"}));
   calibrate->add_option("--spec", cal.spec_path, "calibration spec (TOML, see data/calibration/)")->required();
   calibrate->add_option("--out", cal.out_dir, "output directory (design runs are kept and reused in DIR/runs unless --runs)")->required();
   calibrate->add_option("--mode", cal.mode, "paper (fixed design, default) | sequential (trust-region refinement)")

@@ -60,16 +60,32 @@ TEST(RunFeatures, LoadUnloadCyclesAndBranchesAreNumberedFromOne) {
 }
 
 TEST(LabTests, EachStageHasItsScenarioAndMeasuredReader) {
-  for (const Stage stage : {Stage::kDensity, Stage::kCompression, Stage::kShear}) {
+  for (const Stage stage : {Stage::kDensity, Stage::kCompression, Stage::kShear, Stage::kLoadUnload, Stage::kRepose}) {
     const LabTest& t = lab_test(stage);
     EXPECT_EQ(t.name, to_string(stage));
-    EXPECT_EQ(t.scenario, stage == Stage::kShear ? Scenario::kShear : Scenario::kOedometer);
+    EXPECT_EQ(t.scenario, stage == Stage::kShear    ? Scenario::kShear
+                          : stage == Stage::kRepose ? Scenario::kRepose
+                                                    : Scenario::kOedometer);
+    EXPECT_EQ(scenario_of(stage), t.scenario);
     EXPECT_NE(t.read_spec_measured, nullptr);
     EXPECT_FALSE(t.features.empty());
   }
   EXPECT_NE(lab_test("load_unload").read_curve_features, nullptr);
   EXPECT_NE(lab_test("shear_curve").read_curve_features, nullptr);
   EXPECT_THROW(lab_test("triaxial"), std::out_of_range);
+}
+
+TEST(LabTests, AFeatureNameMatchesItsFamilysPattern) {
+  // "<...>" stands for one or more characters other than '/'.
+  const LabTest& cycles = lab_test("load_unload");
+  for (const char* name : {"cycle1/rebound_strain", "cycle12/loop_area", "branch2/modulus@20000Pa",
+                           "branch1/lateral_ratio@1.5e+05Pa", "branch3/lateral_ratio_end", "bulk_density"})
+    EXPECT_TRUE(names_a_feature_of(cycles, name)) << name;
+  for (const char* name : {"cycle/rebound_strain", "cycle1/x/rebound_strain", "branch2/modulus@Pa", "rebound_strain",
+                           "cycle1/rebound_strain2", "c1"})
+    EXPECT_FALSE(names_a_feature_of(cycles, name)) << name;
+  EXPECT_TRUE(names_a_feature_of(lab_test("shear_curve"), "load-25750Pa/peak_strength"));
+  EXPECT_FALSE(names_a_feature_of(lab_test("repose"), "angle_of_repose"));
 }
 
 TEST(Replicates, PointsAndRealisationsComeBackInOrder) {
