@@ -137,25 +137,29 @@ std::string diagnosis_report(const DiagnosisProblem& p, const DiagnosisResult& d
   o << "| feature | test | measured | model at the fit | after the refit | noise sd | z |\n|---|---|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < p.features.size(); ++i) {
     const auto k = static_cast<Eigen::Index>(i);
-    o << "| " << p.features[i].name << " (" << p.features[i].unit << ") | " << p.features[i].test << " | "
+    const std::string& unit = p.features[i].unit;
+    o << "| " << p.features[i].name << (unit.empty() || unit == "-" ? "" : " (" + unit + ")") << " | "
+      << p.features[i].test << " | "
       << fmt(p.features[i].measured) << " | " << fmt(d.baseline.mean_features[k]) << " | " << fmt(refitted[k]) << " | "
       << fmt(d.baseline.noise.sd[k]) << " | " << fmt(d.baseline.adequacy.z[k]) << " |\n";
   }
   if (refit) {
-    o << "\nLinearised refit from the fit (shift within the ranges):";
+    o << "\nLinearised refit from the fit (shift within the ranges): ";
     for (std::size_t j = 0; j < p.parameters.size(); ++j)
-      o << " " << p.parameters[j].name << " " << (d.baseline.refit_shift[static_cast<Eigen::Index>(j)] >= 0 ? "+" : "")
+      o << (j ? "; " : "") << p.parameters[j].name << " "
+        << (d.baseline.refit_shift[static_cast<Eigen::Index>(j)] >= 0 ? "+" : "")
         << fmt(d.baseline.refit_shift[static_cast<Eigen::Index>(j)])
-        << (d.baseline.held_at_bound[j] ? " (held at its bound)" : "") << ";";
-    o << "\n";
+        << (d.baseline.held_at_bound[j] ? " (held at its bound)" : "");
+    o << ".\n";
   }
   o << "\nAdequacy: chi2 = " << fmt(d.baseline.adequacy.chi_square) << " on " << d.baseline.adequacy.degrees_of_freedom
-    << (d.baseline.adequacy.degrees_of_freedom == 1 ? " degree" : " degrees") << " of freedom, p = " << fmt(d.baseline.adequacy.p_value) << " (alpha = " << fmt(p.settings.significance)
-    << "). Baseline parameters:";
+    << (d.baseline.adequacy.degrees_of_freedom == 1 ? " degree" : " degrees")
+    << " of freedom, p = " << fmt(d.baseline.adequacy.p_value) << " (alpha = " << fmt(p.settings.significance)
+    << "). Baseline parameters: ";
   for (std::size_t j = 0; j < p.parameters.size(); ++j)
-    o << " " << p.parameters[j].name << " = " << fmt(d.baseline.parameters[static_cast<Eigen::Index>(j)]) << " +/- "
-      << fmt(d.baseline.sigma[static_cast<Eigen::Index>(j)]) << " " << p.parameters[j].unit << ";";
-  o << "\n\n";
+    o << (j ? "; " : "") << p.parameters[j].name << " = " << fmt(d.baseline.parameters[static_cast<Eigen::Index>(j)])
+      << " +/- " << fmt(d.baseline.sigma[static_cast<Eigen::Index>(j)]) << unit_suffix(p.parameters[j].unit);
+  o << ".\n\n";
   if (!d.signatures.empty()) {
     o << "## 2. Candidates\n\nEach candidate's signature (d feature / d parameter from its neutral value, common random "
          "numbers), the part the baseline's own parameters cannot absorb, and the one-sided score test against the "
