@@ -4,8 +4,8 @@
 // is an oedometer with a load-unload cycle, a shear test and an angle of repose test on the
 // wide heap (diagnose_dem_cases.hpp): without the repose test, friction absorbs rolling
 // resistance and the data cannot show it (the diagnosis then says so); on the small heap its
-// noise lets a higher friction stand in for it on some seeds. A case takes about 1.5 hours on
-// two cores. COLZA_DIAGNOSE_HEAP=small uses the small heap (a case in ~20 minutes).
+// noise lets a higher friction stand in for it on some seeds. COLZA_DIAGNOSE_HEAP=small uses the
+// small heap (a case in ~20 minutes on two cores).
 // COLZA_DIAGNOSE_KEEP=<folder> keeps each case's
 // data, runs and report in <folder>/<case>-<seed> (a second run reuses every finished run);
 // COLZA_DIAGNOSE_SEEDS=1,4 runs those data seeds instead.

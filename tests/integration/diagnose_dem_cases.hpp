@@ -33,18 +33,20 @@ namespace colza::testing {
 // 4.2e-4, unloading modulus 1.1 MPa, K 0.063, C 1.7 kPa, tan(Phi) 0.024). A lab set may add
 // an angle of repose test, the test that tells rolling resistance from friction (physics.md
 // section 8), with the same particles on a layer of spheres glued to the plate
-// (repose.base = "glued_layer") and the lift and rest under local damping 0.2 (under the
-// paper's 0.7 a heap creeps for seconds and its angle measures the time, not the friction):
+// (repose.base = "glued_layer"):
+// - the wide heap, tests/data/repose_wide.toml: a 100 mm cylinder, ~2600 spheres, viscous
+//   contact damping instead of local damping (which also damps the spin, a rolling resistance
+//   of its own). Its fit error is ~0.5 deg; without rolling resistance the angle saturates
+//   near 18.7 deg above friction 0.4, so no friction stands in for rolling resistance: at
+//   friction 0.2 14.8 deg, with mu_r = 0.09 21.4, with 0.18 25.3 (seed 1). About a minute a run
+//   on one core.
 // - the small heap, tests/data/small_repose.toml generated up to 180 mm (900 spheres do not
-//   all fit below 150 mm on every seed): ~550 spheres, ~6 diameters wide, each fit's own error
-//   ~3.3 deg. At friction 0.2, seeds 1-4: without rolling resistance 23.2, 11.2, 19.7,
-//   19.5 deg; with mu_r = 0.09 31.2, 25.0, 29.3, 31.6; with mu_r = 0.18 31.8, 34.4, 30.3,
-//   31.9. Too noisy to cut the ridge where a higher friction stands in for rolling resistance
-//   (session 36: data seed 2 of the rolling case gave no significant discrepancy).
-// - the wide heap, tests/data/repose_friction_series.toml: a 100 mm cylinder, ~2600 spheres,
-//   each fit's own error ~0.7 deg; at friction 0.2 23.5, 22.4 deg (seeds 1, 2), with
-//   mu_r = 0.09 34.2, 0.18 39.7 (seed 1); at friction 0.4 without rolling resistance 28.1.
-//   About 2.5 minutes a run on one core, 5 times the small heap.
+//   all fit below 150 mm on every seed), under local damping 0.2 (under the paper's 0.7 a heap
+//   creeps for seconds): ~550 spheres, ~6 diameters wide, each fit's own error ~3.3 deg. At
+//   friction 0.2, seeds 1-4: without rolling resistance 23.2, 11.2, 19.7, 19.5 deg; with
+//   mu_r = 0.09 31.2, 25.0, 29.3, 31.6; with mu_r = 0.18 31.8, 34.4, 30.3, 31.9. Too noisy to
+//   cut the ridge where a higher friction stands in for rolling resistance (session 36: data
+//   seed 2 of the rolling case gave no significant discrepancy).
 struct SmallFeature {
   const char* test;
   const char* name;
@@ -100,7 +102,7 @@ inline std::string small_spec(int replicates, const std::function<double(std::si
       << "\n";
     features_of("repose");
   } else if (lab.repose == ReposeHeap::wide) {
-    s << "[[tests]]\nname = \"repose\"\nscenario = \"repose\"\nconfig = \"" << data << "repose_friction_series.toml\"\n"
+    s << "[[tests]]\nname = \"repose\"\nscenario = \"repose\"\nconfig = \"" << data << "repose_wide.toml\"\n"
       << "samples = " << kLabSamples << "\n";
     features_of("repose");
   }
