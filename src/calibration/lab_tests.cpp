@@ -85,6 +85,18 @@ const LabTest& lab_test(Stage stage) { return lab_test(std::string(to_string(sta
 
 Scenario scenario_of(Stage stage) { return lab_test(stage).scenario; }
 
+Features measured_test_curve_features(Scenario scenario, const std::string& csv, const ConfigNode& n,
+                                      const RunConfig& model, const std::string& spec_file) {
+  MeasuredCurveContext context{&model, 0.0, spec_file, n.full("curve")};
+  if (scenario == Scenario::kRepose) return lab_test("repose").read_curve_features(csv, context);
+  if (scenario != Scenario::kOedometer)
+    n.fail("curve", "a load-unload curve belongs to an oedometer test, a heap profile to a repose test (a shear "
+                    "test names [[tests.curves]], one per load)");
+  n.require("sample_height", "the measured sample's height at zero piston travel, m");
+  context.sample_height = n.positive("sample_height", 0.0);
+  return lab_test("load_unload").read_curve_features(csv, context);
+}
+
 namespace {
 
 // `name` against one of a test's feature patterns: a "<...>" stands for one or more

@@ -43,6 +43,13 @@ const LabTest& lab_test(Stage stage);
 // The scenario a calibration stage's runs are.
 Scenario scenario_of(Stage stage);
 
+// The features of a test's measured curve `csv` in `model`'s geometry: a heap profile for a
+// repose test, a load-unload curve for an oedometer test, which needs `n`'s `sample_height`
+// (m, the sample's height at zero piston travel). A shear test's curves are per load
+// (`[[tests.curves]]`), so a single curve on one is refused. `n` names the `curve` key in errors.
+Features measured_test_curve_features(Scenario scenario, const std::string& csv, const ConfigNode& n,
+                                      const RunConfig& model, const std::string& spec_file);
+
 // Whether `name` is one of the test's features ("<...>" in a pattern stands for a load
 // label, a cycle or branch number, a stress: one or more characters other than '/').
 bool names_a_feature_of(const LabTest& test, const std::string& name);

@@ -26,11 +26,9 @@ Features measured_curve_of(const ConfigNode& m, Spec& s, const LabTest& test) {
   s.measured_file = resolve_spec_path(s.file, required_string(m, "curve"));
   if (const std::string why = unreadable_file_reason(s.measured_file); !why.empty())
     m.fail("curve", "the measured curve " + why);
-  MeasuredCurveContext context{&s.base, 0.0, s.file, m.full("curve")};
-  if (s.stage == Stage::kLoadUnload) context.sample_height = required_positive(m, "sample_height");
-  else if (m.has("sample_height"))
+  if (s.stage == Stage::kRepose && m.has("sample_height"))
     m.fail("sample_height", "belongs to a measured load-unload curve, not to a heap profile");
-  return test.read_curve_features(s.measured_file, context);
+  return measured_test_curve_features(test.scenario, s.measured_file, m, s.base, s.file);
 }
 
 // An angle of repose stated in radians, or a heap size in mm, is a unit slip (colza reads

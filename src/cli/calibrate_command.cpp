@@ -239,19 +239,18 @@ int calibrate_command(const CalibrateOptions& opt) {
                        "strengths of equal, independent uncertainty at the measured loads; set [measured] correlation "
                        "(0: independent) if the stated uncertainties did not come from such a fit.";
   }
+  // A sentence after the notes so far.
+  const auto add_note = [&ctx](const std::string& sentence) { ctx.notes += (ctx.notes.empty() ? "" : " ") + sentence; };
   if (spec.stage == Stage::kRepose)
-    ctx.notes += std::string(ctx.notes.empty() ? "" : " ") +
-                 "Each design run is an angle of repose test (the column settled in the cylinder, the cylinder lifted, "
-                 "the heap at rest); its angle is the cone fitted to the heap's surface spheres (docs/running.md).";
+    add_note("Each design run is an angle of repose test (the column settled in the cylinder, the cylinder lifted, "
+             "the heap at rest); its angle is the cone fitted to the heap's surface spheres (docs/running.md).");
   if (spec.stage == Stage::kLoadUnload)
-    ctx.notes += std::string(ctx.notes.empty() ? "" : " ") +
-                 "Each design run is an oedometer load-unload test (oedometer.cycles); its features come from its "
-                 "curve by the code that reduces the measured curve.";
+    add_note("Each design run is an oedometer load-unload test (oedometer.cycles); its features come from its "
+             "curve by the code that reduces the measured curve.");
   if (spec.stage == Stage::kCompression)
-    ctx.notes += std::string(ctx.notes.empty() ? "" : " ") +
-                 (spec.correlation_given ? "The correlation of the measured c1 and c2 is the spec's ([measured] correlation)."
-                                         : "The measured c1 and c2 are taken as independent; set [measured] correlation "
-                                           "if repeated tests show how they vary together.");
+    add_note(spec.correlation_given ? "The correlation of the measured c1 and c2 is the spec's ([measured] correlation)."
+                                    : "The measured c1 and c2 are taken as independent; set [measured] correlation "
+                                      "if repeated tests show how they vary together.");
   ctx.measured = measured_data_summary(spec);
   ctx.measured_section = measured_data_section(spec);
   for (const auto& run : result.runs) {

@@ -1,26 +1,18 @@
 #include "diagnose/diagnosis_spec.hpp"
 
-#include <filesystem>
 #include <set>
 
 #include "config/config_error.hpp"
 #include "config/config_reader.hpp"
 #include "calibration/lab_tests.hpp"
 #include "calibration/run_features.hpp"
+#include "calibration/spec_model.hpp"
 #include "io/format_number.hpp"
 #include "io/input_file.hpp"
 
 namespace colza::diagnose {
 
-namespace fs = std::filesystem;
-
 namespace {
-
-std::string resolve(const std::string& spec_file, const std::string& value) {
-  fs::path p(value);
-  if (p.is_relative()) p = fs::path(spec_file).parent_path() / p;
-  return p.lexically_normal().string();
-}
 
 std::vector<std::string> string_list(const ConfigNode& n, const std::string& key) {
   std::vector<std::string> out;
@@ -73,25 +65,15 @@ calibration::Features measured_curve_features(const ConfigNode& t, const std::st
   } catch (const ConfigError& e) {
     t.fail("config", "test " + test.name + "'s model (its measured curves are read in its geometry): " + e.what());
   }
-  if (t.has("curve") && test.scenario == Scenario::kRepose) {
-    const calibration::MeasuredCurveContext c{&model, 0.0, spec_file, t.full("curve")};
-    const std::string csv = resolve(spec_file, required_string(t, "curve", "a measured heap profile (CSV)"));
-    out = calibration::lab_test("repose").read_curve_features(csv, c);
-  } else if (t.has("curve")) {
-    if (test.scenario != Scenario::kOedometer)
-      t.fail("curve", "a load-unload curve belongs to an oedometer test, a heap profile to a repose test (a shear "
-                      "test names [[tests.curves]], one per load)");
-    t.require("sample_height", "the measured sample's height at zero piston travel, m");
-    const calibration::MeasuredCurveContext c{&model, t.positive("sample_height", 0.0), spec_file, t.full("curve")};
-    const std::string csv = resolve(spec_file, required_string(t, "curve", "a measured load-unload curve (CSV)"));
-    out = calibration::lab_test("load_unload").read_curve_features(csv, c);
-  }
+  if (t.has("curve"))
+    out = calibration::measured_test_curve_features(
+        test.scenario, calibration::resolve_spec_path(spec_file, required_string(t, "curve", "a measured curve (CSV)")), t, model, spec_file);
   for (const ConfigNode& load : per_load) {
     if (test.scenario != Scenario::kShear) load.fail("file", "shear curves per load belong to a shear test");
     load.require("normal_stress", "the load's normal stress, Pa");
     const double sigma = load.positive("normal_stress", 0.0);
     const calibration::MeasuredCurveContext c{&model, 0.0, spec_file, load.full("file")};
-    const std::string csv = resolve(spec_file, required_string(load, "file", "a measured shear curve (CSV)"));
+    const std::string csv = calibration::resolve_spec_path(spec_file, required_string(load, "file", "a measured shear curve (CSV)"));
     for (const auto& [name, value] : calibration::lab_test("shear_curve").read_curve_features(csv, c))
       out[calibration::load_feature_name(sigma, name)] = value;
   }
@@ -106,7 +88,7 @@ DiagnosisTest read_test(const ConfigNode& t, const std::string& spec_file, std::
   t.require("scenario", "\"oedometer\", \"shear\" or \"repose\"");
   const std::string scenario = t.choice("scenario", "", {"oedometer", "shear", "repose"});
   test.scenario = scenario == "shear" ? Scenario::kShear : scenario == "repose" ? Scenario::kRepose : Scenario::kOedometer;
-  test.config = resolve(spec_file, required_string(t, "config", "the model config of this test"));
+  test.config = calibration::resolve_spec_path(spec_file, required_string(t, "config", "the model config of this test"));
   if (const std::string why = unreadable_file_reason(test.config); !why.empty())
     t.fail("config", "the model config " + why);
   test.set = string_list(t, "set");

@@ -45,8 +45,8 @@ namespace colza::testing {
 //   creeps for seconds): ~550 spheres, ~6 diameters wide, each fit's own error ~3.3 deg. At
 //   friction 0.2, seeds 1-4: without rolling resistance 23.2, 11.2, 19.7, 19.5 deg; with
 //   mu_r = 0.09 31.2, 25.0, 29.3, 31.6; with mu_r = 0.18 31.8, 34.4, 30.3, 31.9. Too noisy to
-//   cut the ridge where a higher friction stands in for rolling resistance (session 36: data
-//   seed 2 of the rolling case gave no significant discrepancy).
+//   cut the ridge where a higher friction stands in for rolling resistance (on data seed 2 of
+//   the rolling case the diagnosis finds no significant discrepancy).
 struct SmallFeature {
   const char* test;
   const char* name;
