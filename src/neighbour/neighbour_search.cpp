@@ -113,7 +113,7 @@ void NeighbourSearch::build_particle_pairs(const ParticleArrays& particles, int 
   for (std::size_t k = 0; k < n; ++k) {
     const Index i = cell_particles_[k];
     sorted_[k] = {particles.position[i].x(), particles.position[i].y(), particles.position[i].z(),
-                  particles.radius[i]};
+                  particles.radius[i], static_cast<double>(particles.fixed[i] != 0)};
   }
   // Partners j > i of particles [begin, end), appended in (i, j) order.
   auto search = [&](std::size_t begin, std::size_t end, std::vector<Index>& f, std::vector<Index>& s) {
@@ -121,6 +121,7 @@ void NeighbourSearch::build_particle_pairs(const ParticleArrays& particles, int 
     for (std::size_t i = begin; i < end; ++i) {
       const Vec3& xi = particles.position[i];
       const double ri = particles.radius[i];
+      const double fixed_i = particles.fixed[i] != 0 ? 1.0 : 0.0;
       const int cx = cell_coord(xi, 0), cy = cell_coord(xi, 1), cz = cell_coord(xi, 2);
       const int x_lo = std::max(0, cx - 1), x_hi = std::min(dims[0] - 1, cx + 1);
       const int z_lo = std::max(0, cz - 1), z_hi = std::min(dims[2] - 1, cz + 1);
@@ -138,13 +139,17 @@ void NeighbourSearch::build_particle_pairs(const ParticleArrays& particles, int 
           const std::size_t row = (static_cast<std::size_t>(z) * dims[1] + y) * dims[0];
           // Branch-free: every particle is written, the count advances for partners only
           // (half of the tests fail on j > i and the rest at random: branches mispredict).
+          // Two fixed spheres are never partners: their motion is prescribed, so a force
+          // between them would move neither (a glued base's ~2000 spheres would otherwise
+          // bring ~2 candidate pairs each, every step).
           for (Index k = cell_start_[row + x_lo]; k < cell_start_[row + x_hi + 1]; ++k) {
             const Index j = cell_particles_[k];
             const SortedSphere& q = sorted_[k];
             const double reach = ri + q.r + skin_;
             const double dx = q.x - xi.x(), dy = q.y - xi.y(), dz = q.z - xi.z();
             partners[found] = j;
-            found += static_cast<std::size_t>((j > i) & ((dx * dx + dy * dy) + dz * dz < reach * reach));
+            found += static_cast<std::size_t>((j > i) & ((dx * dx + dy * dy) + dz * dz < reach * reach) &
+                                              (fixed_i * q.fixed == 0.0));
           }
         }
       std::sort(partners.begin(), partners.begin() + static_cast<std::ptrdiff_t>(found));

@@ -1,6 +1,7 @@
 // Linked-cell neighbour search with a Verlet skin.
-// Candidates: particle pairs with |x2 - x1| < R1 + R2 + skin, and sphere-wall pairs (Wall::meets_fixed_spheres) whose
-// gap is below the skin (a finite cylinder taken as reaching one skin beyond its ends,
+// Candidates: particle pairs with |x2 - x1| < R1 + R2 + skin, at least one of them not fixed
+// (two fixed spheres' motion is prescribed: a force between them would move neither), and
+// sphere-wall pairs (Wall::meets_fixed_spheres) whose gap is below the skin (a finite cylinder taken as reaching one skin beyond its ends,
 // since the sphere's axial coordinate also changes by at most a skin). The lists stay
 // valid while every particle and every wall has moved no more than skin/2 since the last
 // build (two bodies then closed the gap by at most a skin), so rebuilds happen only when
@@ -31,6 +32,7 @@ class NeighbourSearch {
                             std::vector<Index>& second);
   struct SortedSphere {
     double x, y, z, r;
+    double fixed;  // 1: a fixed sphere (ParticleArrays::fixed), else 0
   };
   double skin_;
   bool valid_ = false;

@@ -34,11 +34,12 @@ ParticleArrays cloud(std::size_t n, std::uint64_t seed) {
   return p;
 }
 
-// Every pair i < j with |x_j - x_i| < r_i + r_j + skin, in (i, j) order.
+// Every pair i < j with |x_j - x_i| < r_i + r_j + skin, not both fixed, in (i, j) order.
 std::vector<std::pair<Index, Index>> brute_force_pairs(const ParticleArrays& p) {
   std::vector<std::pair<Index, Index>> pairs;
   for (std::size_t i = 0; i < p.size(); ++i)
     for (std::size_t j = i + 1; j < p.size(); ++j) {
+      if (p.fixed[i] && p.fixed[j]) continue;
       const double reach = p.radius[i] + p.radius[j] + kSkin;
       if ((p.position[j] - p.position[i]).norm() < reach)
         pairs.emplace_back(static_cast<Index>(i), static_cast<Index>(j));
@@ -75,6 +76,23 @@ TEST(NeighbourSearch, CandidatesAreExactlyThePairsWithinReachInPairOrder) {
     EXPECT_EQ(listed_pairs(store), expected) << "seed " << seed;
     EXPECT_EQ(store.particle_pairs.history.size(), expected.size());
   }
+}
+
+// Two fixed spheres are never candidates (their motion is prescribed); a fixed and a free
+// one are, as two free ones are.
+TEST(NeighbourSearch, TwoFixedSpheresAreNeverCandidates) {
+  ParticleArrays p = cloud(900, 5);
+  std::size_t fixed_pairs = 0;
+  for (std::size_t i = 0; i < p.size(); i += 2) p.fixed[i] = 1;
+  for (std::size_t i = 0; i < p.size(); i += 2)
+    for (std::size_t j = i + 2; j < p.size(); j += 2)
+      fixed_pairs += (p.position[j] - p.position[i]).norm() < p.radius[i] + p.radius[j] + kSkin;
+  ASSERT_GT(fixed_pairs, 100u);  // the rule has pairs to leave out
+  ContactStore store;
+  NeighbourSearch(kSkin).rebuild(p, floor_and_envelope(), store, 2);
+  const auto expected = brute_force_pairs(p);
+  ASSERT_GT(expected.size(), 900u);
+  EXPECT_EQ(listed_pairs(store), expected);
 }
 
 // The search splits particles in ranges over threads (from 1024 particles on, 512 per
