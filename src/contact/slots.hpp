@@ -12,8 +12,9 @@
 //
 // Two tiers run a model (engine/force_loops_body.hpp): the baseline (linear, Coulomb, no damping, no
 // rolling, no bond or the contact bond) runs the batched kernels, and so do its particle pairs
-// with one lane mechanism (rolling resistance or viscous damping alone); any other
-// combination runs the generic law (contact/generic_law.hpp), one loop with a run-time choice
+// with one lane mechanism (rolling resistance, viscous damping, Walton-Braun or load-induced
+// cohesion), or with viscous damping and one of the others; any other combination runs the
+// generic law (contact/generic_law.hpp), one loop with a run-time choice
 // per slot.
 #pragma once
 #include <variant>

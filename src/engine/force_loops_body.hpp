@@ -32,6 +32,7 @@
 #include "engine/pair_batch.hpp"
 #include "engine/pair_force.hpp"
 #include "engine/pair_sinks.hpp"
+#include "engine/damped_lanes.hpp"
 #include "engine/rolling_lanes.hpp"
 #include "engine/viscous_lanes.hpp"
 #include "engine/wall_batch.hpp"
@@ -53,6 +54,7 @@ using detail::particle_pairs_in_lanes;
 using detail::PairBatch;
 using detail::RollingLanes;
 using detail::ViscousLanes;
+using detail::DampedLanes;
 using detail::WaltonBraunLanes;
 using detail::LoadInducedLanes;
 using detail::wall_pair_force;
@@ -88,11 +90,12 @@ struct GenericLaw {
   const SlotStateLayout& layout;
   bool bond_new_contacts;
 };
-// MechanismLaw: the baseline's slots with one mechanism the lanes compute (`Mechanism`: the
-// elastic-plastic rolling moment, viscous dashpots, the Walton-Braun normal law or load-induced
-// cohesion; with_lane_mechanism): particle pairs in the batched kernels with the mechanism's
-// lanes (engine/rolling_lanes.hpp, viscous_lanes.hpp, walton_braun_lanes.hpp,
-// load_induced_lanes.hpp), compiled for `Bond` and the mechanism; the generic law for the
+// MechanismLaw: the baseline's slots with one mechanism the lanes compute, or viscous damping
+// and one other (`Mechanism`: the elastic-plastic rolling moment, viscous dashpots, the
+// Walton-Braun normal law, load-induced cohesion, or ViscousWith one of the others;
+// with_lane_mechanism): particle pairs in the batched kernels with the mechanism's lanes
+// (engine/rolling_lanes.hpp, viscous_lanes.hpp, walton_braun_lanes.hpp,
+// load_induced_lanes.hpp, damped_lanes.hpp), compiled for `Bond` and the mechanism; the generic law for the
 // pairs that are not steady lanes, for wall pairs, for several particle materials and for
 // dt = 0 (where the generic law leaves out the tangential dashpot). Same
 // bits as the generic law (ForcePaths.TheMechanismLanesGiveTheGenericTierBits).
@@ -123,14 +126,32 @@ inline LoadInducedLanes<PairBatch::kLanes> lanes_of(const LoadInducedBond& bond,
                                                     const SlotStateLayout& layout) {
   return LoadInducedLanes<PairBatch::kLanes>(bond, state, layout.stride, layout.bond);
 }
+// Viscous damping together with another lane mechanism (`Other`).
+template <class Other>
+struct ViscousWith {
+  const ViscousDamping& viscous;
+  const Other& other;
+};
+template <class Other>
+inline auto lanes_of(const ViscousWith<Other>& m, double* state, const SlotStateLayout& layout) {
+  using OtherLanes = decltype(lanes_of(m.other, state, layout));
+  return DampedLanes<PairBatch::kLanes, OtherLanes>(lanes_of(m.viscous, state, layout),
+                                                    lanes_of(m.other, state, layout));
+}
 // Load-induced cohesion runs the lanes' contact-bond rule with each lane's strengths
 // (LoadInducedLanes): this bond's own strengths are never read.
 constexpr ContactBond kStrengthsPerLane{};
+// Whether a lane mechanism brings the bonds' strengths (load-induced cohesion, alone or damped).
+template <class Mechanism>
+inline constexpr bool kBringsBondStrengths = std::is_same_v<Mechanism, LoadInducedBond>;
+template <class Other>
+inline constexpr bool kBringsBondStrengths<ViscousWith<Other>> = kBringsBondStrengths<Other>;
 
 // Calls f(mechanism) when the model is the baseline's slots (linear, Coulomb, no damping, no
-// rolling, no bond or the contact bond) with exactly one of them changed to a mechanism the
-// lanes compute: the elastic-plastic rolling moment, viscous damping, the Walton-Braun
-// normal law or load-induced cohesion. Returns whether it did.
+// rolling, no bond or the contact bond) with one of them changed to a mechanism the lanes
+// compute (the elastic-plastic rolling moment, viscous damping, the Walton-Braun normal law
+// or load-induced cohesion), or with viscous damping and one other (ViscousWith). Returns
+// whether it did.
 template <class F>
 bool with_lane_mechanism(const ContactModel& m, F&& f) {
   if (!std::holds_alternative<CoulombTangential>(m.tangential)) return false;
@@ -139,13 +160,18 @@ bool with_lane_mechanism(const ContactModel& m, F&& f) {
   const auto* walton_braun = std::get_if<WaltonBraunNormal>(&m.normal);
   const auto* load_induced = std::get_if<LoadInducedBond>(&m.bond);
   const bool linear = std::holds_alternative<LinearNormal>(m.normal);
-  const int mechanisms =
-      (rolling != nullptr) + (viscous != nullptr) + (walton_braun != nullptr) + (load_induced != nullptr);
-  if (mechanisms != 1 || !(linear || walton_braun)) return false;
-  if (rolling) f(*rolling);
-  else if (viscous) f(*viscous);
-  else if (walton_braun) f(*walton_braun);
-  else f(*load_induced);
+  const int others = (rolling != nullptr) + (walton_braun != nullptr) + (load_induced != nullptr);
+  if (others > 1 || others + (viscous != nullptr) == 0 || !(linear || walton_braun)) return false;
+  const auto with_dashpots = [&](const auto& other) {
+    if (viscous)
+      f(ViscousWith<std::decay_t<decltype(other)>>{*viscous, other});
+    else
+      f(other);
+  };
+  if (rolling) with_dashpots(*rolling);
+  else if (walton_braun) with_dashpots(*walton_braun);
+  else if (load_induced) with_dashpots(*load_induced);
+  else f(*viscous);
   return true;
 }
 
@@ -412,7 +438,7 @@ void force_loops(const ForceLoopJob& job, ForceLoopTotals& totals) {
       const GenericLaw generic{physics.model, world.contacts.slot_state_layout(), bond_new};
       const auto in_lanes = [&](const auto& mechanism) {
         using Mechanism = std::decay_t<decltype(mechanism)>;
-        if constexpr (std::is_same_v<Mechanism, LoadInducedBond>) {
+        if constexpr (kBringsBondStrengths<Mechanism>) {
           run(MechanismLaw<ContactBond, Mechanism>{kStrengthsPerLane, mechanism, generic});
         } else {
           std::visit(

@@ -247,9 +247,10 @@ TEST(ForcePaths, TheGenericTierWithMechanismsGivesTheOneThreadBitsOnThreads) {
   EXPECT_EQ(std::memcmp(&one.ledger.viscous_dissipated, &three.ledger.viscous_dissipated, sizeof(double)), 0);
 }
 
-// Rolling resistance, viscous damping or the Walton-Braun normal law on the paper's law runs
-// its particle pairs in the batched kernel with the mechanism's lanes
-// (engine/rolling_lanes.hpp, viscous_lanes.hpp, walton_braun_lanes.hpp): the generic tier's
+// Rolling resistance, viscous damping, the Walton-Braun normal law or load-induced cohesion
+// on the paper's law, or viscous damping with one of the others, runs its particle pairs in
+// the batched kernel with the mechanism's lanes (engine/rolling_lanes.hpp, viscous_lanes.hpp,
+// walton_braun_lanes.hpp, load_induced_lanes.hpp, damped_lanes.hpp): the generic tier's
 // bits, both forms of the rolling spring, bonds breaking, the caps and the loading
 // dissipating, with a wide skin (candidates apart) and on two threads.
 TEST(ForcePaths, TheMechanismLanesGiveTheGenericTierBits) {
@@ -262,7 +263,10 @@ TEST(ForcePaths, TheMechanismLanesGiveTheGenericTierBits) {
                             Mechanism{"rolling, PFC's form", true, false, false, false, RollingForm::kPfc},
                             Mechanism{"viscous", false, true, false, false, RollingForm::kYade},
                             Mechanism{"Walton-Braun", false, false, true, false, RollingForm::kYade},
-                            Mechanism{"load-induced", false, false, false, true, RollingForm::kYade}}) {
+                            Mechanism{"load-induced", false, false, false, true, RollingForm::kYade},
+                            Mechanism{"viscous and rolling", true, true, false, false, RollingForm::kYade},
+                            Mechanism{"viscous and Walton-Braun", false, true, true, false, RollingForm::kYade},
+                            Mechanism{"viscous and load-induced", false, true, false, true, RollingForm::kYade}}) {
     for (const bool bonds : {false, true}) {
       if (bonds && m.load_induced) continue;  // its own bonds
       SCOPED_TRACE(std::string(m.name) + (bonds ? ", bonds" : ", no bonds"));
