@@ -304,6 +304,9 @@ def read_contact_model(c, k):
     if at_walls:
         raise ConfigError("contact.elastic_plastic.at_walls = true: YADE's sphere-wall law "
                           "(Law2_ScGeom_FrictPhys_CundallStrack) has no rolling moment")
+    if ep.get("damping_ratio", 0.0) != 0.0:
+        raise ConfigError(f'contact.elastic_plastic.damping_ratio = {ep["damping_ratio"]}: YADE\'s CohFrict law '
+                          "has a rolling spring and its cap, no rolling dashpot")
     if ct["hertz"]:
         raise ConfigError('contact.rolling = "elastic_plastic" with contact.normal = "hertz": not mapped '
                           "(YADE's Mindlin law has its own rolling moment, krot constant and cap eta (R1 + R2)/2 |Fn|)")

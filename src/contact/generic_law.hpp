@@ -128,11 +128,12 @@ inline ContactOutcome evaluate_contact_generic(const ContactModel& m, const Slot
       mr -= mr.cross(tilt);
       mr -= mr.cross(spin);
     }
-    out.rolling_dissipation = rolling->update(c, k.normal, k.rotation_increment, fn, mr);
+    const RollingStep step = rolling->update(c, k.normal, k.rotation_increment, fn, mr);
+    out.rolling_dissipation = step.dissipated;
     mr_state[0] = mr[0];
     mr_state[1] = mr[1];
     mr_state[2] = mr[2];
-    out.moment_on_2 = mr;
+    out.moment_on_2 = rolling->damping_ratio > 0.0 ? Vec3(mr + step.dashpot_moment) : mr;
     out.has_moment = true;
   }
   // Steps 4-5: bond or friction limit.

@@ -20,21 +20,41 @@ struct PairContext {
   double effective_mass = 0.0;    // m* = m1 m2 / (m1 + m2) (kg)
   double dt = 0.0;                // s
   bool with_wall = false;
+  // I_r = [1/(I1 + m1 R1^2) + 1/(I2 + m2 R2^2)]^-1 (kg m^2): the pair's inertia for rolling
+  // about the contact (Ai et al. 2011, eq. 16); sphere-wall I + m R^2.
+  double rolling_inertia = 0.0;
 };
 
-// The context of particle pair (i, j): R* = R1 R2 / (R1 + R2), m* = m1 m2 / (m1 + m2); for
+// I + m R^2 (kg m^2) of one body rolling about its contact point.
+inline double inertia_about_contact(double inertia, double mass, double radius) {
+  return inertia + mass * radius * radius;
+}
+// I_r of two bodies' (kg m^2), a b / (a + b).
+inline double pair_rolling_inertia(double about_contact_1, double about_contact_2) {
+  return about_contact_1 * about_contact_2 / (about_contact_1 + about_contact_2);
+}
+
+// The context of particle pair (i, j): R* = R1 R2 / (R1 + R2), m* = m1 m2 / (m1 + m2), I_r; for
 // a particle with itself (the time step's contact of a body that has none) R / 2 and m / 2.
 inline PairContext particle_pair_context(const ParticleArrays& p, const PairTable& pairs, Index i, Index j,
                                          double dt) {
   const double ri = p.radius[i], rj = p.radius[j], mi = p.mass[i], mj = p.mass[j];
-  return {pairs.particle_particle(p.material[i], p.material[j]), ri, rj, ri * rj / (ri + rj), mi * mj / (mi + mj),
-          dt, false};
+  return {pairs.particle_particle(p.material[i], p.material[j]),
+          ri,
+          rj,
+          ri * rj / (ri + rj),
+          mi * mj / (mi + mj),
+          dt,
+          false,
+          pair_rolling_inertia(inertia_about_contact(p.inertia[i], mi, ri), inertia_about_contact(p.inertia[j], mj, rj))};
 }
-// The context of particle i against a wall of material `wall_material`: R1 = R2 = R* = R, m* = m.
+// The context of particle i against a wall of material `wall_material`: R1 = R2 = R* = R, m* = m,
+// I_r = I + m R^2.
 inline PairContext wall_pair_context(const ParticleArrays& p, const PairTable& pairs, Index i,
                                      std::size_t wall_material, double dt) {
   const double r = p.radius[i];
-  return {pairs.particle_wall(p.material[i], wall_material), r, r, r, p.mass[i], dt, true};
+  return {pairs.particle_wall(p.material[i], wall_material), r, r, r, p.mass[i], dt, true,
+          inertia_about_contact(p.inertia[i], p.mass[i], r)};
 }
 
 struct ContactKinematics {

@@ -65,6 +65,7 @@ const std::vector<Registration<RollingSlot>>& rolling_registry() {
          r.friction = p.non_negative("friction", 0.0);              // mu_r (-)
          r.form = p.choice("form", "yade", {"yade", "pfc"}) == "yade" ? RollingForm::kYade : RollingForm::kPfc;
          r.at_walls = p.boolean("at_walls", false);
+         r.damping_ratio = p.number_in("damping_ratio", 0.0, 0.0, 1.0);  // eta_r (-)
          return RollingSlot(r);
        }},
   };
@@ -110,7 +111,7 @@ nlohmann::json parameters_of(const ViscousDamping& d) {
 }
 nlohmann::json parameters_of(const ElasticPlasticRolling& r) {
   return {{"stiffness_factor", r.stiffness_factor}, {"friction", r.friction}, {"form", to_string(r.form)},
-          {"at_walls", r.at_walls}};
+          {"at_walls", r.at_walls}, {"damping_ratio", r.damping_ratio}};
 }
 nlohmann::json parameters_of(const ContactBond& b) {
   return {{"normal_strength", b.normal_strength}, {"shear_strength", b.shear_strength}};

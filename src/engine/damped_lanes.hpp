@@ -59,9 +59,9 @@ struct DampedLanes {
   template <bool kDissipation>
   [[gnu::always_inline]] LaneMoment lane(int l, const Law& both, double nx, double ny, double nz, double hx,
                                          double hy, double hz, double twist, double rx, double ry, double rz,
-                                         double ri, double rj, double fn, double ks) {
+                                         double ri, double rj, double fn, double ks, double dt) {
     return inner.template lane<kDissipation>(l, both.inner, nx, ny, nz, hx, hy, hz, twist, rx, ry, rz, ri, rj, fn,
-                                             ks);
+                                             ks, dt);
   }
   // The dashpots as ViscousLanes::damp, with the normal law's tangent stiffness.
   template <bool kDissipation>

@@ -17,24 +17,31 @@ namespace colza::detail {
 
 // One lane's inputs: new normal n, previous normal h, twist angle about h (rad), relative
 // rotation of the step (w2 - w1) dt (rad), stored moment Mr (N m), rolling stiffness kr
-// (N m/rad) and moment limit M_max (N m).
+// (N m/rad), moment limit M_max (N m) and the dashpot's Cr / dt (N m/rad; 0 without one).
 struct LaneRollingContact {
   double nx, ny, nz;
   double hx, hy, hz, twist;
   double rx, ry, rz;
   double mx, my, mz;
   double kr, limit;
+  double dashpot_per_step;
 };
 
-// The new moment on body 2 (N m) and the energy the cap dissipated (J).
+// A moment on body 2 (N m) and the energy dissipated making it (J).
 struct LaneMoment {
   double mx, my, mz;
   double dissipated;
 };
+// The spring's new moment (stored), the moment applied (the spring's plus the dashpot's) and
+// the energy the cap or the dashpot dissipated (J).
+struct LaneRollingStep {
+  double mx, my, mz;  // spring, N m
+  LaneMoment applied;
+};
 
 // kDissipation: compute the cap's energy (false when no energy ledger is kept; it is then 0).
 template <bool kDissipation>
-[[gnu::always_inline]] inline LaneMoment lane_rolling_moment(const LaneRollingContact& c) {
+[[gnu::always_inline]] inline LaneRollingStep lane_rolling_moment(const LaneRollingContact& c) {
   double mx = c.mx, my = c.my, mz = c.mz;
   // Carried into the new frame: Mr -= Mr x (n_old x n);  Mr -= Mr x (twist n_old).
   {
@@ -61,25 +68,41 @@ template <bool kDissipation>
   const double m2 = (mx * mx + my * my) + mz * mz;
   const bool caps = m2 > c.limit * c.limit;
   const double scale = c.limit / std::sqrt(m2);
-  LaneMoment out;
+  LaneRollingStep out;
   out.mx = caps ? mx * scale : mx;
   out.my = caps ? my * scale : my;
   out.mz = caps ? mz * scale : mz;
-  if constexpr (kDissipation)
-    out.dissipated =
-        caps ? (((mx - out.mx) * out.mx + (my - out.my) * out.my) + (mz - out.mz) * out.mz) / c.kr : 0.0;
-  else
-    out.dissipated = 0.0;
+  // The dashpot while the spring holds: Md = -(Cr / dt) dtheta_b, dissipating
+  // (Cr / dt) dtheta_b . dtheta_b (J).
+  const bool damps = !caps & (c.dashpot_per_step > 0.0);
+  const double dx = c.dashpot_per_step * bx, dy = c.dashpot_per_step * by, dz = c.dashpot_per_step * bz;
+  out.applied.mx = damps ? out.mx + -dx : out.mx;
+  out.applied.my = damps ? out.my + -dy : out.my;
+  out.applied.mz = damps ? out.mz + -dz : out.mz;
+  if constexpr (kDissipation) {
+    const double capped = (((mx - out.mx) * out.mx + (my - out.my) * out.my) + (mz - out.mz) * out.mz) / c.kr;
+    const double damped = (dx * bx + dy * by) + dz * bz;
+    out.applied.dissipated = caps ? capped : (damps ? damped : 0.0);
+  } else {
+    out.applied.dissipated = 0.0;
+  }
   return out;
 }
 
-// ElasticPlasticRolling's parameters as the lanes take them: beta (-), mu_r (-), and 1 when
+// ElasticPlasticRolling's parameters as the lanes take them: beta (-), mu_r (-), 1 when
 // the spring has YADE's form, 0 for PFC's (a double: a select on a bool the loop does not
-// compute does not vectorise).
+// compute does not vectorise), and eta_r (-).
 struct LaneRollingLaw {
   double stiffness_factor, friction;
   double yade_form;
+  double damping_ratio;
 };
+// The dashpot's Cr / dt (N m/rad) at kr (N m/rad), I_r (kg m^2) and dt (s), as
+// ElasticPlasticRolling::dashpot_coefficient states Cr.
+[[gnu::always_inline]] inline double lane_rolling_dashpot_per_step(const LaneRollingLaw& law, double kr,
+                                                                   double rolling_inertia, double dt) {
+  return 2.0 * law.damping_ratio * std::sqrt(rolling_inertia * kr) / dt;
+}
 
 // kr (N m/rad) and M_max / max(Fn, 0) (m) of a particle pair of radii ri, rj (m) and shear
 // stiffness ks (N/m), as ElasticPlasticRolling::stiffness and moment_limit state them.

@@ -225,7 +225,7 @@ inline void compute_lanes(PairBatch& b, const Bond& bond, const PairParameters& 
       // Relative rotation of the step (w2 - w1) dt (rad).
       const auto m = mechanism.template lane<kSlip>(l, mechanism_law, nx, ny, nz, hx, hy, hz, twist, (wjx - wix) * dt,
                                                         (wjy - wiy) * dt, (wjz - wiz) * dt, b.ri[l], b.rj[l], r.fn,
-                                                        ks);
+                                                        ks, dt);
       tix = tix + m.mx;
       tiy = tiy + m.my;
       tiz = tiz + m.mz;

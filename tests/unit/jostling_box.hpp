@@ -39,6 +39,7 @@ struct Setup {
   bool mechanisms = false;    // rolling resistance, viscous dashpots and the elasto-plastic normal law on
   bool rolling = false;       // rolling resistance alone on the paper's law (its lanes in the batched kernel)
   RollingForm rolling_form = RollingForm::kYade;
+  double rolling_damping = 0.0;  // eta_r of the rolling dashpot
   bool viscous = false;       // viscous dashpots alone on the paper's law (their lanes in the batched kernel)
   bool walton_braun = false;  // the Walton-Braun normal law alone in place of the linear spring (its lanes)
   bool load_induced = false;  // load-induced cohesion alone (its lanes): bonds forming under load and breaking
@@ -103,9 +104,9 @@ inline PhysicsSettings physics(const Setup& setup) {
   if (setup.mechanisms) {
     s.model.normal = WaltonBraunNormal{2.0};
     s.model.damping = ViscousDamping{0.2, 0.1};
-    s.model.rolling = ElasticPlasticRolling{1.0, 0.1, RollingForm::kYade, true};
+    s.model.rolling = ElasticPlasticRolling{1.0, 0.1, RollingForm::kYade, true, 0.3};
   }
-  if (setup.rolling) s.model.rolling = ElasticPlasticRolling{1.0, 0.05, setup.rolling_form, true};
+  if (setup.rolling) s.model.rolling = ElasticPlasticRolling{1.0, 0.05, setup.rolling_form, true, setup.rolling_damping};
   if (setup.viscous) s.model.damping = ViscousDamping{0.3, 0.2};
   if (setup.walton_braun) s.model.normal = WaltonBraunNormal{2.0};
   if (setup.load_induced) s.model.bond = LoadInducedBond{0.02, 1.0, 1.5, 0.08, 0.1};

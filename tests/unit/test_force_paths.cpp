@@ -258,20 +258,25 @@ TEST(ForcePaths, TheMechanismLanesGiveTheGenericTierBits) {
     const char* name;
     bool rolling, viscous, walton_braun, load_induced;
     RollingForm form;
+    double rolling_damping = 0.0;
   };
   for (const Mechanism m : {Mechanism{"rolling, YADE's form", true, false, false, false, RollingForm::kYade},
                             Mechanism{"rolling, PFC's form", true, false, false, false, RollingForm::kPfc},
                             Mechanism{"viscous", false, true, false, false, RollingForm::kYade},
                             Mechanism{"Walton-Braun", false, false, true, false, RollingForm::kYade},
                             Mechanism{"load-induced", false, false, false, true, RollingForm::kYade},
+                            Mechanism{"rolling with its dashpot", true, false, false, false, RollingForm::kYade, 0.3},
                             Mechanism{"viscous and rolling", true, true, false, false, RollingForm::kYade},
+                            Mechanism{"viscous and rolling with its dashpot", true, true, false, false,
+                                      RollingForm::kPfc, 0.5},
                             Mechanism{"viscous and Walton-Braun", false, true, true, false, RollingForm::kYade},
                             Mechanism{"viscous and load-induced", false, true, false, true, RollingForm::kYade}}) {
     for (const bool bonds : {false, true}) {
       if (bonds && m.load_induced) continue;  // its own bonds
       SCOPED_TRACE(std::string(m.name) + (bonds ? ", bonds" : ", no bonds"));
       const ::Setup lanes_setup{
-          .bonds = bonds, .rolling = m.rolling, .rolling_form = m.form, .viscous = m.viscous,
+          .bonds = bonds, .rolling = m.rolling, .rolling_form = m.form, .rolling_damping = m.rolling_damping,
+                   .viscous = m.viscous,
                    .walton_braun = m.walton_braun, .load_induced = m.load_induced};
       ::Setup generic_setup = lanes_setup;
       generic_setup.generic_tier = true;
@@ -290,12 +295,14 @@ TEST(ForcePaths, TheMechanismLanesGiveTheGenericTierBits) {
       EXPECT_EQ(std::memcmp(&generic.ledger.plastic_dissipated, &lanes.ledger.plastic_dissipated, sizeof(double)), 0);
     }
     SCOPED_TRACE(std::string(m.name) + ", wide skin and two threads");
-    const ::Setup wide{.skin = 2.5e-3, .rolling = m.rolling, .rolling_form = m.form, .viscous = m.viscous,
+    const ::Setup wide{.skin = 2.5e-3, .rolling = m.rolling, .rolling_form = m.form,
+                       .rolling_damping = m.rolling_damping, .viscous = m.viscous,
                    .walton_braun = m.walton_braun, .load_induced = m.load_induced};
     ::Setup wide_generic = wide;
     wide_generic.generic_tier = true;
     expect_same_state(run_path(wide_generic, 1).world, run_path(wide, 1).world);
-    const ::Setup bonded{.bonds = true, .rolling = m.rolling, .rolling_form = m.form, .viscous = m.viscous,
+    const ::Setup bonded{.bonds = true, .rolling = m.rolling, .rolling_form = m.form,
+                         .rolling_damping = m.rolling_damping, .viscous = m.viscous,
                    .walton_braun = m.walton_braun, .load_induced = m.load_induced};
     ::Setup bonded_generic = bonded;
     bonded_generic.generic_tier = true;

@@ -226,6 +226,48 @@ TEST(Mechanisms, RollingSpringOscillatesWithThePeriodOfKrAndTheInertia) {
   EXPECT_LT(kr * omega0 / std::sqrt(kr / inertia), 1.0 * kRadius * sphere_mass() * 9.81);  // below the cap
 }
 
+// The rolling dashpot (Ai et al. 2011's type C): the same rocking as above, damped. Its
+// coefficient Cr = 2 eta_r sqrt(I_r kr) takes the inertia about the contact, I_r = I + m R^2 =
+// 7/2 I at a wall, while the sphere rocks about its centre with inertia I: the rocking's
+// damping ratio is zeta = Cr / (2 sqrt(I kr)) = eta_r sqrt(7/2). A damped oscillator's spin
+// peaks one period T_d = 2 pi / (w0 sqrt(1 - zeta^2)) apart fall by exp(-zeta w0 T_d). At a
+// peak the spin's acceleration is zero, so the spring holds the dashpot's moment, kr theta =
+// -Cr w: the energy there is 1/2 I w^2 + (Cr w)^2 / (2 kr) = 1/2 I w^2 (1 + 4 zeta^2), and the
+// dashpot dissipates its drop between two peaks. Explicit time stepping shifts each by
+// O(zeta w0 dt) ~ 3e-4.
+TEST(Mechanisms, RollingDashpotDampsTheRockingByItsRatio) {
+  const double beta = 0.5, eta = 0.1, omega0 = 0.02;  // -, -, rad/s
+  const ContactModel model = model_with(LinearNormal{}, CoulombTangential{}, NoDamping{},
+                                        ElasticPlasticRolling{beta, 1.0, RollingForm::kYade, true, eta});
+  OnPlane o = sphere_on_plane(model, 1e-7, 0.0, Vec3::Zero(), Vec3(omega0, 0, 0));
+  const double ks = 100e3 * 1000e3 / (100e3 + 1000e3);
+  const double kr = beta * ks * kRadius * kRadius;
+  const double inertia = 0.4 * sphere_mass() * kRadius * kRadius;
+  const double w0 = std::sqrt(kr / inertia), zeta = eta * std::sqrt(3.5);
+  const double damped_period = 2.0 * std::numbers::pi / (w0 * std::sqrt(1.0 - zeta * zeta));
+  // The spin's peaks (wx at a local maximum) and their times.
+  std::vector<double> peaks, times, dissipated;
+  double before = omega0, now = omega0;
+  for (long n = 0; n < 4000000 && peaks.size() < 3; ++n) {
+    const double dissipated_now = o.stepper.ledger().rolling_dissipated;
+    o.stepper.step(o.world);
+    const double next = o.world.particles.angular_velocity[0].x();
+    if (n > 1 && now > before && now >= next && now > 0.0) {
+      peaks.push_back(now);
+      times.push_back(o.world.time);
+      dissipated.push_back(dissipated_now);  // the ledger when the spin was `now`
+    }
+    before = now;
+    now = next;
+  }
+  ASSERT_EQ(peaks.size(), 3u);
+  EXPECT_NEAR(times[2] - times[1], damped_period, 2e-3 * damped_period);
+  EXPECT_NEAR(peaks[2] / peaks[1], std::exp(-zeta * w0 * damped_period), 2e-3);
+  const double lost = 0.5 * inertia * (1.0 + 4.0 * zeta * zeta) * (peaks[1] * peaks[1] - peaks[2] * peaks[2]);
+  EXPECT_NEAR(dissipated[2] - dissipated[1], lost, 1e-2 * lost);
+  EXPECT_LT(kr * omega0 / w0, 1.0 * kRadius * sphere_mass() * 9.81);  // below the cap: the dashpot acts throughout
+}
+
 // Rolling stop: a sphere rolling without slip at v0 on a plane with the moment at its cap
 // M = mu_r R m g (YADE form at a wall: min(R, R) = R) loses its kinetic energy 7/10 m v0^2 to
 // M ds / R: it stops after s = 7 v0^2 / (10 mu_r g), in t = 7 v0 / (5 mu_r g). The rolling
@@ -351,7 +393,7 @@ const std::vector<NormalSlot> kNormals = {LinearNormal{}, HertzNormal{}, WaltonB
 const std::vector<TangentialSlot> kTangentials = {CoulombTangential{}, MindlinTangential{}};
 const std::vector<DampingSlot> kDampings = {NoDamping{}, ViscousDamping{0.2, 0.2}};
 const std::vector<RollingSlot> kRollings = {NoRolling{}, ElasticPlasticRolling{0.5, 0.1, RollingForm::kYade, true},
-                                            ElasticPlasticRolling{0.5, 0.1, RollingForm::kPfc, false}};
+                                            ElasticPlasticRolling{0.5, 0.1, RollingForm::kPfc, false, 0.3}};
 const std::vector<BondSlot> kBonds = {NoBond{}, ContactBond{0.5, 0.5}, LoadInducedBond{0.05, 0.5, 0.5}};
 
 template <class Slot>

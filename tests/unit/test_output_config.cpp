@@ -127,7 +127,7 @@ TEST(ContactSummary, EachSlotNamesItsLawAndTheParametersItRunsWith) {
   EXPECT_EQ(j["normal"], (nlohmann::json{{"law", "linear"}}));
   EXPECT_EQ(j["damping"], (nlohmann::json{{"law", "none"}}));
   EXPECT_EQ(j["rolling"], (nlohmann::json{{"law", "elastic_plastic"}, {"friction", 0.18}, {"stiffness_factor", 1.0},
-                                          {"form", "yade"}, {"at_walls", false}}));
+                                          {"form", "yade"}, {"at_walls", false}, {"damping_ratio", 0.0}}));
   EXPECT_EQ(j["bond"]["law"], "load_induced");
   EXPECT_EQ(j["bond"]["normal_strength_ratio"], 0.45);
   EXPECT_EQ(j["bond"]["shear_strength_ratio"], 2.5);
