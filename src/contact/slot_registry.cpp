@@ -65,7 +65,12 @@ const std::vector<Registration<RollingSlot>>& rolling_registry() {
          r.friction = p.non_negative("friction", 0.0);              // mu_r (-)
          r.form = p.choice("form", "yade", {"yade", "pfc"}) == "yade" ? RollingForm::kYade : RollingForm::kPfc;
          r.at_walls = p.boolean("at_walls", false);
-         r.damping_ratio = p.number_in("damping_ratio", 0.0, 0.0, 1.0);  // eta_r (-)
+         // eta_r (-). At most 0.5: the dashpot's Cr = 2 eta_r sqrt(I_r kr) damps a sphere rocking
+         // about its centre (inertia I = 2/7 I_r at a wall or between two equal spheres) at
+         // zeta = eta_r sqrt(7/2), and the explicit step stays stable while w dt <= 2 (sqrt(1 +
+         // zeta^2) - zeta): at the time step's w dt <= 0.8 (safety 0.8 of sqrt(I / k_rot)), zeta
+         // <= 1.05, eta_r <= 0.56.
+         r.damping_ratio = p.number_in("damping_ratio", 0.0, 0.0, 0.5);
          return RollingSlot(r);
        }},
   };

@@ -6,6 +6,14 @@
 
 namespace colza {
 
+// ParticleArrays::fixed: a free sphere is integrated; a fixed one is not, its velocity is
+// prescribed (kPrescribed) or zero for good (kAnchored: a base glued to a plate). Two anchored
+// spheres never form a candidate pair (neighbour/neighbour_search.hpp): neither moves, so a
+// force between them would do nothing.
+inline constexpr std::uint8_t kFree = 0;
+inline constexpr std::uint8_t kPrescribed = 1;
+inline constexpr std::uint8_t kAnchored = 2;
+
 struct ParticleArrays {
   // State, leapfrog convention: position at t, velocities at t - dt/2.
   std::vector<Vec3> position;
@@ -19,7 +27,7 @@ struct ParticleArrays {
   std::vector<double> mass;
   std::vector<double> inertia;   // scalar moment of inertia (kg m^2)
   std::vector<std::uint16_t> material;  // index into the particle material table
-  std::vector<std::uint8_t> fixed;      // 1: not integrated (velocity prescribed)
+  std::vector<std::uint8_t> fixed;      // kFree, kPrescribed or kAnchored (below)
 
   std::size_t size() const { return position.size(); }
 

@@ -113,7 +113,7 @@ void NeighbourSearch::build_particle_pairs(const ParticleArrays& particles, int 
   for (std::size_t k = 0; k < n; ++k) {
     const Index i = cell_particles_[k];
     sorted_[k] = {particles.position[i].x(), particles.position[i].y(), particles.position[i].z(),
-                  particles.radius[i], static_cast<double>(particles.fixed[i] != 0)};
+                  particles.radius[i], static_cast<double>(particles.fixed[i] == kAnchored)};
   }
   // Partners j > i of particles [begin, end), appended in (i, j) order.
   auto search = [&](std::size_t begin, std::size_t end, std::vector<Index>& f, std::vector<Index>& s) {
@@ -121,7 +121,7 @@ void NeighbourSearch::build_particle_pairs(const ParticleArrays& particles, int 
     for (std::size_t i = begin; i < end; ++i) {
       const Vec3& xi = particles.position[i];
       const double ri = particles.radius[i];
-      const double fixed_i = particles.fixed[i] != 0 ? 1.0 : 0.0;
+      const double anchored_i = particles.fixed[i] == kAnchored ? 1.0 : 0.0;
       const int cx = cell_coord(xi, 0), cy = cell_coord(xi, 1), cz = cell_coord(xi, 2);
       const int x_lo = std::max(0, cx - 1), x_hi = std::min(dims[0] - 1, cx + 1);
       const int z_lo = std::max(0, cz - 1), z_hi = std::min(dims[2] - 1, cz + 1);
@@ -139,9 +139,10 @@ void NeighbourSearch::build_particle_pairs(const ParticleArrays& particles, int 
           const std::size_t row = (static_cast<std::size_t>(z) * dims[1] + y) * dims[0];
           // Branch-free: every particle is written, the count advances for partners only
           // (half of the tests fail on j > i and the rest at random: branches mispredict).
-          // Two fixed spheres are never partners: their motion is prescribed, so a force
-          // between them would move neither (a glued base's ~2000 spheres would otherwise
-          // bring ~2 candidate pairs each, every step).
+          // Two anchored spheres are never partners: neither ever moves, so a force between
+          // them would do nothing (a glued base's ~2000 spheres would otherwise bring ~2
+          // candidate pairs each, every step). Spheres with a prescribed motion are, as a
+          // micro test measures the force between two of them.
           for (Index k = cell_start_[row + x_lo]; k < cell_start_[row + x_hi + 1]; ++k) {
             const Index j = cell_particles_[k];
             const SortedSphere& q = sorted_[k];
@@ -149,7 +150,7 @@ void NeighbourSearch::build_particle_pairs(const ParticleArrays& particles, int 
             const double dx = q.x - xi.x(), dy = q.y - xi.y(), dz = q.z - xi.z();
             partners[found] = j;
             found += static_cast<std::size_t>((j > i) & ((dx * dx + dy * dy) + dz * dz < reach * reach) &
-                                              (fixed_i * q.fixed == 0.0));
+                                              (anchored_i * q.anchored == 0.0));
           }
         }
       std::sort(partners.begin(), partners.begin() + static_cast<std::ptrdiff_t>(found));

@@ -1,6 +1,7 @@
 // Linked-cell neighbour search with a Verlet skin.
-// Candidates: particle pairs with |x2 - x1| < R1 + R2 + skin, at least one of them not fixed
-// (two fixed spheres' motion is prescribed: a force between them would move neither), and
+// Candidates: particle pairs with |x2 - x1| < R1 + R2 + skin, at least one of them not
+// anchored (kAnchored: two spheres that never move exert a force on each other that does
+// nothing), and
 // sphere-wall pairs (Wall::meets_fixed_spheres) whose gap is below the skin (a finite cylinder taken as reaching one skin beyond its ends,
 // since the sphere's axial coordinate also changes by at most a skin). The lists stay
 // valid while every particle and every wall has moved no more than skin/2 since the last
@@ -32,7 +33,7 @@ class NeighbourSearch {
                             std::vector<Index>& second);
   struct SortedSphere {
     double x, y, z, r;
-    double fixed;  // 1: a fixed sphere (ParticleArrays::fixed), else 0
+    double anchored;  // 1: an anchored sphere (ParticleArrays::fixed == kAnchored), else 0
   };
   double skin_;
   bool valid_ = false;

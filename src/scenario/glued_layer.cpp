@@ -88,7 +88,7 @@ ParticleArrays glued_layer(const GluedLayerRequest& q) {
   ParticleArrays layer;
   for (const DiscGrid::Disc& d : grid.discs()) {
     layer.add(Vec3(d.x, d.y, d.r), d.r, q.density);
-    layer.fixed.back() = 1;
+    layer.fixed.back() = kAnchored;
   }
   return layer;
 }

@@ -47,7 +47,7 @@ SceneResult run_scene(const RunConfig& c, Progress& progress, double snapshot_in
   World world;
   for (const SceneParticle& sp : s.particles) {
     const Index i = world.particles.add(sp.position, sp.radius, c.particle.density, 0, sp.velocity, sp.angular_velocity);
-    world.particles.fixed[i] = sp.fixed ? 1 : 0;
+    world.particles.fixed[i] = sp.fixed ? kPrescribed : kFree;
   }
   world.walls = s.walls;
   stepper.prepare(world);

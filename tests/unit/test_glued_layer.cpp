@@ -50,7 +50,7 @@ TEST(GluedLayer, SpheresRestOnThePlateInsideTheDiscAndOverlapNone) {
   std::size_t filled = 0;
   for (std::size_t i = 0; i < layer.size(); ++i) {
     const double r = layer.radius[i];
-    EXPECT_EQ(layer.fixed[i], 1);
+    EXPECT_EQ(layer.fixed[i], kAnchored);
     EXPECT_DOUBLE_EQ(layer.position[i].z(), r);
     EXPECT_GE(r, r_fill * (1.0 - 1e-4));
     EXPECT_LE(r, 0.5 * q.diameter_max);

@@ -34,12 +34,12 @@ ParticleArrays cloud(std::size_t n, std::uint64_t seed) {
   return p;
 }
 
-// Every pair i < j with |x_j - x_i| < r_i + r_j + skin, not both fixed, in (i, j) order.
+// Every pair i < j with |x_j - x_i| < r_i + r_j + skin, not both anchored, in (i, j) order.
 std::vector<std::pair<Index, Index>> brute_force_pairs(const ParticleArrays& p) {
   std::vector<std::pair<Index, Index>> pairs;
   for (std::size_t i = 0; i < p.size(); ++i)
     for (std::size_t j = i + 1; j < p.size(); ++j) {
-      if (p.fixed[i] && p.fixed[j]) continue;
+      if (p.fixed[i] == kAnchored && p.fixed[j] == kAnchored) continue;
       const double reach = p.radius[i] + p.radius[j] + kSkin;
       if ((p.position[j] - p.position[i]).norm() < reach)
         pairs.emplace_back(static_cast<Index>(i), static_cast<Index>(j));
@@ -78,16 +78,16 @@ TEST(NeighbourSearch, CandidatesAreExactlyThePairsWithinReachInPairOrder) {
   }
 }
 
-// Two fixed spheres are never candidates (their motion is prescribed); a fixed and a free
-// one are, as two free ones are.
-TEST(NeighbourSearch, TwoFixedSpheresAreNeverCandidates) {
+// Two anchored spheres (a glued base) are never candidates; an anchored and a free one are,
+// and so are two with a prescribed motion (a micro test's).
+TEST(NeighbourSearch, TwoAnchoredSpheresAreNeverCandidates) {
   ParticleArrays p = cloud(900, 5);
-  std::size_t fixed_pairs = 0;
-  for (std::size_t i = 0; i < p.size(); i += 2) p.fixed[i] = 1;
-  for (std::size_t i = 0; i < p.size(); i += 2)
-    for (std::size_t j = i + 2; j < p.size(); j += 2)
-      fixed_pairs += (p.position[j] - p.position[i]).norm() < p.radius[i] + p.radius[j] + kSkin;
-  ASSERT_GT(fixed_pairs, 100u);  // the rule has pairs to leave out
+  std::size_t anchored_pairs = 0;
+  for (std::size_t i = 0; i < p.size(); i += 2) p.fixed[i] = i % 4 == 0 ? kAnchored : kPrescribed;
+  for (std::size_t i = 0; i < p.size(); i += 4)
+    for (std::size_t j = i + 4; j < p.size(); j += 4)
+      anchored_pairs += (p.position[j] - p.position[i]).norm() < p.radius[i] + p.radius[j] + kSkin;
+  ASSERT_GT(anchored_pairs, 20u);  // the rule has pairs to leave out
   ContactStore store;
   NeighbourSearch(kSkin).rebuild(p, floor_and_envelope(), store, 2);
   const auto expected = brute_force_pairs(p);

@@ -128,6 +128,10 @@ TEST(ContactSummary, EachSlotNamesItsLawAndTheParametersItRunsWith) {
   EXPECT_EQ(j["damping"], (nlohmann::json{{"law", "none"}}));
   EXPECT_EQ(j["rolling"], (nlohmann::json{{"law", "elastic_plastic"}, {"friction", 0.18}, {"stiffness_factor", 1.0},
                                           {"form", "yade"}, {"at_walls", false}, {"damping_ratio", 0.0}}));
+  // The rolling dashpot's ratio: above 0.5 the rocking it damps outruns the time step's margin.
+  const std::string rolling = "[contact]\nrolling = \"elastic_plastic\"\n[contact.elastic_plastic]\n";
+  EXPECT_EQ(contact_summary(oedometer(rolling + "damping_ratio = 0.3\n").contact)["rolling"]["damping_ratio"], 0.3);
+  EXPECT_EQ(output_error(rolling + "damping_ratio = 0.7\n").key(), "contact.elastic_plastic.damping_ratio");
   EXPECT_EQ(j["bond"]["law"], "load_induced");
   EXPECT_EQ(j["bond"]["normal_strength_ratio"], 0.45);
   EXPECT_EQ(j["bond"]["shear_strength_ratio"], 2.5);
