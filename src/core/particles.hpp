@@ -27,7 +27,7 @@ struct ParticleArrays {
   std::vector<double> mass;
   std::vector<double> inertia;   // scalar moment of inertia (kg m^2)
   std::vector<std::uint16_t> material;  // index into the particle material table
-  std::vector<std::uint8_t> fixed;      // kFree, kPrescribed or kAnchored (below)
+  std::vector<std::uint8_t> fixed;      // kFree, kPrescribed or kAnchored (above)
 
   std::size_t size() const { return position.size(); }
 

@@ -26,7 +26,7 @@ struct RollingLanes {
   std::size_t offset;  // the rolling slot's Mr in a row
   alignas(64) double mr[3][kLanes];       // stored moment on body 2 (N m)
   alignas(64) double mr_new[3][kLanes];   // this step's moment on body 2 (N m)
-  alignas(64) double inertia[kLanes];     // I_r (kg m^2), with a dashpot only (else 0)
+  alignas(64) double inertia[kLanes] = {};  // I_r (kg m^2), filled with a dashpot only (else 0)
   alignas(64) double dissipated[kLanes];  // J, the cap's or the dashpot's this step
 
   RollingLanes(const ElasticPlasticRolling& rolling, double* rows, std::size_t row_stride, std::size_t mr_offset)
@@ -51,8 +51,6 @@ struct RollingLanes {
         inertia[l] = pair_rolling_inertia(inertia_about_contact(p.inertia[i], p.mass[i], p.radius[i]),
                                           inertia_about_contact(p.inertia[j], p.mass[j], p.radius[j]));
       }
-    else
-      for (int l = 0; l < b.count; ++l) inertia[l] = 0.0;
   }
   // Lane l's moment this step, the spring's and the dashpot's (`rolling` a copy of `law` the
   // caller keeps out of its loop; n, h, twist as the paper's law takes them; rotation the

@@ -1,9 +1,9 @@
 // Linked-cell neighbour search with a Verlet skin.
 // Candidates: particle pairs with |x2 - x1| < R1 + R2 + skin, at least one of them not
 // anchored (kAnchored: two spheres that never move exert a force on each other that does
-// nothing), and
-// sphere-wall pairs (Wall::meets_fixed_spheres) whose gap is below the skin (a finite cylinder taken as reaching one skin beyond its ends,
-// since the sphere's axial coordinate also changes by at most a skin). The lists stay
+// nothing), and sphere-wall pairs (Wall::meets_fixed_spheres) whose gap is below the skin (a
+// finite cylinder taken as reaching one skin beyond its ends, since the sphere's axial
+// coordinate also changes by at most a skin). The lists stay
 // valid while every particle and every wall has moved no more than skin/2 since the last
 // build (two bodies then closed the gap by at most a skin), so rebuilds happen only when
 // that is violated.
